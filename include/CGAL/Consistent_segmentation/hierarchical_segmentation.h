@@ -1,0 +1,199 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_CONSISTENT_SEGMENTATION_HIERARCHICAL_SEGMENTATION_H
+#define CGAL_CONSISTENT_SEGMENTATION_HIERARCHICAL_SEGMENTATION_H
+
+/// \file hierarchical_segmentation.h
+
+#include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/parameters.h>
+#include <CGAL/Shape_analysis/internal/Component_links.h>
+#include <CGAL/Shape_analysis/internal/Dual_graph.h>
+#include <CGAL/Shape_analysis/internal/Mesh_checks.h>
+#include <CGAL/Shape_analysis/internal/Normalized_cut_clustering.h>
+#include <CGAL/Consistent_segmentation/internal/Segmentation_graph.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <functional>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Consistent_segmentation {
+
+/// The named parameters of this package (this project's, and CGAL's usable in the same chain).
+namespace parameters = CGAL::Shape_analysis::parameters;
+using CGAL::Shape_analysis::Bad_input;
+
+/*!
+\ingroup PkgConsistentSegmentationRef
+
+Segments a triangle mesh into parts by greedy hierarchical clustering of its faces under the
+area-normalized cut (\cgalCite{Golovinskiy2010}, section 3.3).
+
+Every face starts as its own segment; adjacent segments are merged, always the pair whose
+merge lowers \f$\sum_S \mathrm{cut}(S) / \mathrm{area}(S)\f$ the most, until
+`number_of_segments` remain. Cutting an edge of length \f$l\f$ whose dihedral angle measured
+outside the surface is \f$\theta\f$ costs \f$l \cdot \min((\theta/\pi)^\alpha, 1)\f$, so
+boundaries follow concave creases. Faces of different connected components that are closer than a
+fraction of the bounding-box diagonal are joined by weak links, so that a model built of touching
+or nearby pieces (a chair made of separate legs and seat) is segmented as one object; components
+that are far from everything are joined by the weakest links of all. Boundaries of an optional
+prior segmentation are made cheaper to cut. Specks smaller than \f$10^{-4}\f$ of the total
+area (a folded-over face, whose edges all look like deep creases, for instance) are merged into
+their neighbours before any two larger segments are, so that they never count as parts.
+
+Segment ids are `0 .. n-1`, numbered by decreasing area. The result depends on the geometry and
+the connectivity of the mesh; the order of its faces only matters where two merges are equally
+good up to rounding.
+
+\tparam TriangleMesh a model of `FaceListGraph` (for example `CGAL::Surface_mesh` or
+        `CGAL::Polyhedron_3`)
+\tparam FaceSegmentMap a model of `WritablePropertyMap` with
+        `boost::graph_traits<TriangleMesh>::%face_descriptor` as key and an integer type as value
+\tparam NamedParameters a sequence of named parameters
+
+\param tm the triangle mesh; it must be non-empty, have only triangle faces and finite coordinates
+\param face_segment_map receives the segment id of every face
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{number_of_segments}
+    \cgalParamDescription{the number of segments to produce}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`8`}
+    \cgalParamExtra{must be between 1 and the number of faces}
+  \cgalParamNEnd
+  \cgalParamNBegin{concavity_exponent}
+    \cgalParamDescription{the exponent \f$\alpha\f$ of the concavity weight: larger values make
+      concave creases relatively cheaper to cut}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`10`}
+  \cgalParamNEnd
+  \cgalParamNBegin{prior_segment_map}
+    \cgalParamDescription{a prior segmentation: a property map from faces to integer labels; edges
+      between faces of different labels are cheaper to cut}
+    \cgalParamType{a model of `ReadablePropertyMap` with `face_descriptor` as key and an integer
+      type as value}
+    \cgalParamDefault{no prior segmentation}
+  \cgalParamNEnd
+  \cgalParamNBegin{prior_boundary_factor}
+    \cgalParamDescription{the factor by which the cut cost of a prior boundary edge is divided}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`10`}
+    \cgalParamExtra{must be at least 1}
+  \cgalParamNEnd
+  \cgalParamNBegin{component_link_distance}
+    \cgalParamDescription{faces of different connected components closer than this fraction of
+      the bounding-box diagonal are linked}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0.1`}
+  \cgalParamNEnd
+  \cgalParamNBegin{component_link_factor}
+    \cgalParamDescription{the cost of a link between components, relative to the mean cut cost of
+      the mesh edges (\f$k_{cc}\f$)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0.01`}
+  \cgalParamNEnd
+  \cgalParamNBegin{boundary_refinement}
+    \cgalParamDescription{whether the segment boundaries are refined after the clustering: whole
+      clusters of the merge history, then single faces, are moved to a neighbouring segment while
+      the normalized cut decreases}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{progress_callback}
+    \cgalParamDescription{called from time to time with the fraction of the work done (from 0 to
+      1), for example to show progress on a long run}
+    \cgalParamType{a callable convertible to `std::function<void(double)>`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `vertex_descriptor` as key and
+      a point type of a CGAL kernel as value}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_index_map}
+    \cgalParamDescription{a property map associating to each face of `tm` a unique index between
+      `0` and `num_faces(tm) - 1`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `face_descriptor` as key and
+      `std::size_t` as value}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the number of segments written to `face_segment_map`
+
+\throws CGAL::Shape_analysis::Bad_input if `tm` has no faces, a face that is not a triangle or a
+        coordinate that is not finite, or if a parameter is out of its range; `face_segment_map`
+        is then left untouched.
+*/
+template <typename TriangleMesh, typename FaceSegmentMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t hierarchical_segmentation(const TriangleMesh& tm, FaceSegmentMap face_segment_map,
+                                      const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace SA = CGAL::Shape_analysis;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  const std::string who = "hierarchical_segmentation";
+
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, tm));
+  auto fim = CGAL::get_initialized_face_index_map(tm, np);
+
+  SA::internal::check_triangle_mesh(tm, vpm, who);
+  const std::size_t n = static_cast<std::size_t>(num_faces(tm));
+
+  internal::Segmentation_options options;
+  options.number_of_segments =
+    SA::internal::parameter_value<std::size_t>(np, snp::number_of_segments_tag, std::size_t(8));
+  options.concavity_exponent =
+    SA::internal::parameter_value<double>(np, snp::concavity_exponent_tag, 10.0);
+  options.prior_boundary_factor =
+    SA::internal::parameter_value<double>(np, snp::prior_boundary_factor_tag, 10.0);
+  options.component_link_distance =
+    SA::internal::parameter_value<double>(np, snp::component_link_distance_tag, 0.1);
+  options.component_link_factor =
+    SA::internal::parameter_value<double>(np, snp::component_link_factor_tag, 0.01);
+  options.boundary_refinement =
+    SA::internal::parameter_value<bool>(np, snp::boundary_refinement_tag, true);
+  options.progress = SA::internal::parameter_value<std::function<void(double)>>(
+    np, snp::progress_callback_tag, std::function<void(double)>());
+  internal::check_options(options, n, who);
+
+  SA::internal::Dual_graph graph;
+  SA::internal::build_dual_graph(tm, vpm, fim, options.concavity_exponent, graph);
+
+  auto prior = get_parameter(np, snp::prior_segment_map_tag);
+  constexpr bool has_prior =
+    !std::is_same<decltype(prior), CGAL::internal_np::Param_not_found>::value;
+  std::vector<long long> prior_labels;
+  if constexpr(has_prior) {
+    prior_labels.assign(n, 0);
+    for(auto f : faces(tm))
+      prior_labels[static_cast<std::size_t>(get(fim, f))] = static_cast<long long>(get(prior, f));
+  }
+
+  const std::vector<std::size_t> labels =
+    internal::segment_dual_graph(graph, options, has_prior ? &prior_labels : nullptr);
+
+  std::size_t count = 0;
+  for(auto f : faces(tm)) {
+    const std::size_t label = labels[static_cast<std::size_t>(get(fim, f))];
+    put(face_segment_map, f, label);
+    count = (std::max)(count, label + 1);
+  }
+  return count;
+}
+
+} // namespace Consistent_segmentation
+} // namespace CGAL
+
+#endif // CGAL_CONSISTENT_SEGMENTATION_HIERARCHICAL_SEGMENTATION_H

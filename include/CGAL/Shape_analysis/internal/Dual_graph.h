@@ -1,0 +1,191 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_SHAPE_ANALYSIS_INTERNAL_DUAL_GRAPH_H
+#define CGAL_SHAPE_ANALYSIS_INTERNAL_DUAL_GRAPH_H
+
+// The weighted dual graph of a triangle mesh (faces are nodes, adjacent faces are joined), stored
+// as flat arrays, with the cut and traversal costs of the thesis:
+//   w(theta) = min((theta / pi)^alpha, 1), theta the dihedral angle measured outside the surface
+//   cut cost       = edge length * w(theta)        (cheap across concave creases)
+//   traversal cost = centroid distance / w(theta)  (expensive across concave creases)
+// Node sizes are face areas. Each graph edge remembers the mesh edge it crosses (its rank in the
+// iteration order of `edges(tm)`), or `no_mesh_edge` for an edge added later (component links).
+
+#include <CGAL/Shape_analysis/internal/Vector_3d.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Shape_analysis {
+namespace internal {
+
+struct Dual_graph
+{
+  static constexpr std::size_t no_mesh_edge = (std::numeric_limits<std::size_t>::max)();
+  // Smallest concavity weight kept, so that traversal costs stay finite.
+  static constexpr double min_weight = 1e-12;
+
+  // Nodes.
+  std::vector<double> node_size;        // face area
+  std::vector<Vector_3d> node_position; // face centroid
+  std::vector<Vector_3d> node_normal;   // unit normal (zero for a degenerate face)
+
+  // Undirected edges.
+  std::vector<std::uint32_t> edge_source;
+  std::vector<std::uint32_t> edge_target;
+  std::vector<double> edge_length;       // length of the mesh edge (0 for links)
+  std::vector<double> concavity_weight;  // w(theta) in [min_weight, 1]
+  std::vector<double> cut_cost;
+  std::vector<double> traversal_cost;
+  std::vector<std::size_t> mesh_edge;    // rank in edges(tm), or no_mesh_edge
+
+  // Adjacency in compressed rows (valid after build_adjacency()).
+  std::vector<std::size_t> first_arc;    // size n + 1
+  std::vector<std::uint32_t> arc_target;
+  std::vector<std::uint32_t> arc_edge;
+
+  // Whole-mesh figures.
+  std::size_t number_of_mesh_edges = 0;
+  double mean_mesh_edge_length = 0;
+  double bbox_diagonal = 0;
+
+  std::size_t number_of_nodes() const { return node_size.size(); }
+  std::size_t number_of_edges() const { return edge_source.size(); }
+
+  std::size_t add_edge(std::uint32_t u, std::uint32_t v, double length, double weight,
+                       double cut, double traversal, std::size_t mesh_edge_rank)
+  {
+    edge_source.push_back(u);
+    edge_target.push_back(v);
+    edge_length.push_back(length);
+    concavity_weight.push_back(weight);
+    cut_cost.push_back(cut);
+    traversal_cost.push_back(traversal);
+    mesh_edge.push_back(mesh_edge_rank);
+    return edge_source.size() - 1;
+  }
+
+  void build_adjacency()
+  {
+    const std::size_t n = number_of_nodes();
+    first_arc.assign(n + 1, 0);
+    for(std::size_t e = 0; e < number_of_edges(); ++e) {
+      ++first_arc[edge_source[e] + 1];
+      ++first_arc[edge_target[e] + 1];
+    }
+    std::partial_sum(first_arc.begin(), first_arc.end(), first_arc.begin());
+    arc_target.resize(first_arc[n]);
+    arc_edge.resize(first_arc[n]);
+    std::vector<std::size_t> fill(first_arc.begin(), first_arc.end() - 1);
+    for(std::size_t e = 0; e < number_of_edges(); ++e) {
+      const std::uint32_t u = edge_source[e], v = edge_target[e];
+      arc_target[fill[u]] = v;
+      arc_edge[fill[u]++] = static_cast<std::uint32_t>(e);
+      arc_target[fill[v]] = u;
+      arc_edge[fill[v]++] = static_cast<std::uint32_t>(e);
+    }
+  }
+
+  double total_size() const { return std::accumulate(node_size.begin(), node_size.end(), 0.0); }
+};
+
+// w(theta) for the angle `phi` between the two face normals (0 = flat) and the crease type.
+inline double concavity_weight(double phi, bool concave, double alpha)
+{
+  if(!concave)
+    return 1.0; // flat or convex: theta >= pi
+  const double theta_over_pi = (std::max)(0.0, 1.0 - phi / CGAL_PI);
+  return (std::max)(Dual_graph::min_weight, (std::min)(1.0, std::pow(theta_over_pi, alpha)));
+}
+
+// Builds the dual graph of a triangle mesh. `fim` maps faces to 0..n-1. Coordinates are read
+// through `vpm` and converted to double.
+template <typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap>
+void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap fim, double alpha,
+                      Dual_graph& g)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+
+  auto point = [&](typename GT::vertex_descriptor v) {
+    const auto& p = get(vpm, v);
+    return Vector_3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  };
+
+  const std::size_t n = static_cast<std::size_t>(num_faces(tm));
+  g = Dual_graph();
+  g.node_size.assign(n, 0.0);
+  g.node_position.assign(n, Vector_3d());
+  g.node_normal.assign(n, Vector_3d());
+
+  Vector_3d lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for(auto v : vertices(tm)) {
+    const Vector_3d p = point(v);
+    lo = lo.min(p);
+    hi = hi.max(p);
+  }
+  g.bbox_diagonal = num_vertices(tm) > 0 ? (hi - lo).length() : 0.0;
+
+  for(auto f : faces(tm)) {
+    const std::size_t i = static_cast<std::size_t>(get(fim, f));
+    const halfedge_descriptor h = halfedge(f, tm);
+    const Vector_3d p = point(source(h, tm)), q = point(target(h, tm)),
+                    r = point(target(next(h, tm), tm));
+    const Vector_3d c = cross(q - p, r - p);
+    const double twice_area = c.length();
+    g.node_size[i] = 0.5 * twice_area;
+    g.node_position[i] = (p + q + r) / 3.0;
+    g.node_normal[i] = twice_area > 0 ? c / twice_area : Vector_3d();
+  }
+
+  std::size_t rank = 0;
+  double length_sum = 0;
+  g.edge_source.reserve(static_cast<std::size_t>(num_edges(tm)));
+  for(auto e : edges(tm)) {
+    const std::size_t this_rank = rank++;
+    const halfedge_descriptor h = halfedge(e, tm), ho = opposite(h, tm);
+    const Vector_3d p = point(source(h, tm)), q = point(target(h, tm));
+    const double length = (q - p).length();
+    length_sum += length;
+    if(is_border(h, tm) || is_border(ho, tm))
+      continue;
+    const std::size_t f = static_cast<std::size_t>(get(fim, face(h, tm)));
+    const std::size_t o = static_cast<std::size_t>(get(fim, face(ho, tm)));
+    if(f == o)
+      continue;
+    const Vector_3d& nf = g.node_normal[f];
+    const Vector_3d& no = g.node_normal[o];
+    double w = 1.0;
+    if(nf.squared_length() > 0 && no.squared_length() > 0) {
+      const double cos_phi = (std::max)(-1.0, (std::min)(1.0, dot(nf, no)));
+      const double phi = std::acos(cos_phi);
+      // Concave when the apex of the other face lies above the plane of this face.
+      const Vector_3d s = point(target(next(ho, tm), tm));
+      const bool concave = dot(nf, s - p) > 0;
+      w = concavity_weight(phi, concave, alpha);
+    }
+    const double centroid_distance = (g.node_position[f] - g.node_position[o]).length();
+    g.add_edge(static_cast<std::uint32_t>(f), static_cast<std::uint32_t>(o), length, w, length * w,
+               centroid_distance / w, this_rank);
+  }
+  g.number_of_mesh_edges = rank;
+  g.mean_mesh_edge_length = rank > 0 ? length_sum / double(rank) : 0.0;
+  g.build_adjacency();
+}
+
+} // namespace internal
+} // namespace Shape_analysis
+} // namespace CGAL
+
+#endif // CGAL_SHAPE_ANALYSIS_INTERNAL_DUAL_GRAPH_H

@@ -1,0 +1,115 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_SHAPE_ANALYSIS_INTERNAL_POINT_TREE_H
+#define CGAL_SHAPE_ANALYSIS_INTERNAL_POINT_TREE_H
+
+// A small static kd-tree over indexed 3D points (double), for the nearest-neighbour queries of
+// the graph machinery (component links). Built once, queried many times; no allocation per query.
+
+#include <CGAL/Shape_analysis/internal/Vector_3d.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Shape_analysis {
+namespace internal {
+
+class Point_tree
+{
+public:
+  Point_tree() = default;
+
+  // `ids[k]` is the caller's id of point `points[k]`.
+  Point_tree(const std::vector<Vector_3d>& points, const std::vector<std::uint32_t>& ids)
+    : m_points(points), m_ids(ids)
+  {
+    m_order.resize(points.size());
+    for(std::size_t i = 0; i < points.size(); ++i)
+      m_order[i] = static_cast<std::uint32_t>(i);
+    if(!points.empty())
+      build(0, points.size(), 0);
+  }
+
+  bool empty() const { return m_points.empty(); }
+
+  // The id of the nearest point to `q` closer than sqrt(max_squared_distance), and its squared
+  // distance; returns false when there is none.
+  bool nearest(const Vector_3d& q, double max_squared_distance, std::uint32_t& id,
+               double& squared_distance) const
+  {
+    if(m_points.empty())
+      return false;
+    double best = max_squared_distance;
+    std::uint32_t best_k = (std::numeric_limits<std::uint32_t>::max)();
+    search(0, m_points.size(), 0, q, best, best_k);
+    if(best_k == (std::numeric_limits<std::uint32_t>::max)())
+      return false;
+    id = m_ids[best_k];
+    squared_distance = best;
+    return true;
+  }
+
+private:
+  void build(std::size_t begin, std::size_t end, int depth)
+  {
+    if(end - begin <= leaf_size)
+      return;
+    const int axis = depth % 3;
+    const std::size_t mid = (begin + end) / 2;
+    std::nth_element(m_order.begin() + begin, m_order.begin() + mid, m_order.begin() + end,
+                     [&](std::uint32_t a, std::uint32_t b) {
+                       return m_points[a][axis] < m_points[b][axis];
+                     });
+    build(begin, mid, depth + 1);
+    build(mid + 1, end, depth + 1);
+  }
+
+  void search(std::size_t begin, std::size_t end, int depth, const Vector_3d& q, double& best,
+              std::uint32_t& best_k) const
+  {
+    if(end - begin <= leaf_size) {
+      for(std::size_t i = begin; i < end; ++i) {
+        const std::uint32_t k = m_order[i];
+        const double d = (m_points[k] - q).squared_length();
+        if(d < best || (d == best && k < best_k)) {
+          best = d;
+          best_k = k;
+        }
+      }
+      return;
+    }
+    const int axis = depth % 3;
+    const std::size_t mid = (begin + end) / 2;
+    const std::uint32_t k = m_order[mid];
+    const double diff = q[axis] - m_points[k][axis];
+    const double d = (m_points[k] - q).squared_length();
+    if(d < best || (d == best && k < best_k)) {
+      best = d;
+      best_k = k;
+    }
+    if(diff < 0) {
+      search(begin, mid, depth + 1, q, best, best_k);
+      if(diff * diff <= best)
+        search(mid + 1, end, depth + 1, q, best, best_k);
+    } else {
+      search(mid + 1, end, depth + 1, q, best, best_k);
+      if(diff * diff <= best)
+        search(begin, mid, depth + 1, q, best, best_k);
+    }
+  }
+
+  static constexpr std::size_t leaf_size = 8;
+  std::vector<Vector_3d> m_points;
+  std::vector<std::uint32_t> m_ids;
+  std::vector<std::uint32_t> m_order;
+};
+
+} // namespace internal
+} // namespace Shape_analysis
+} // namespace CGAL
+
+#endif // CGAL_SHAPE_ANALYSIS_INTERNAL_POINT_TREE_H

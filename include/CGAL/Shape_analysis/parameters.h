@@ -1,0 +1,160 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_SHAPE_ANALYSIS_PARAMETERS_H
+#define CGAL_SHAPE_ANALYSIS_PARAMETERS_H
+
+/// \file parameters.h
+/// Named parameters of the Global Shape Analysis packages, usable in one chain with CGAL's own.
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <functional>
+#include <type_traits>
+
+namespace CGAL {
+namespace Shape_analysis {
+
+/// Tags of the named parameters this project adds to CGAL's list.
+namespace internal_np {
+
+// X(tag type, tag value, member/starter function name)
+#define CGAL_SHAPE_ANALYSIS_NAMED_PARAMETER_LIST(X)                                  \
+  X(number_of_segments_t, number_of_segments_tag, number_of_segments)                \
+  X(concavity_exponent_t, concavity_exponent_tag, concavity_exponent)                \
+  X(prior_segment_map_t, prior_segment_map_tag, prior_segment_map)                   \
+  X(prior_boundary_factor_t, prior_boundary_factor_tag, prior_boundary_factor)       \
+  X(component_link_distance_t, component_link_distance_tag, component_link_distance) \
+  X(component_link_factor_t, component_link_factor_tag, component_link_factor)       \
+  X(boundary_refinement_t, boundary_refinement_tag, boundary_refinement)             \
+  X(progress_callback_t, progress_callback_tag, progress_callback)
+
+#define CGAL_SHAPE_ANALYSIS_DECLARE_TAG(X, Y, Z) enum X { Y };
+CGAL_SHAPE_ANALYSIS_NAMED_PARAMETER_LIST(CGAL_SHAPE_ANALYSIS_DECLARE_TAG)
+#undef CGAL_SHAPE_ANALYSIS_DECLARE_TAG
+
+} // namespace internal_np
+
+/// \ingroup PkgShapeAnalysisCore
+/// A named-parameter pack that behaves like `CGAL::Named_function_parameters` (CGAL's functions
+/// accept it, `CGAL::parameters::choose_parameter()` reads it) and whose member functions also
+/// offer the parameters of this project, so that one chain can mix both kinds:
+/// `parameters::number_of_segments(8).vertex_point_map(vpm).random_seed(3)`.
+template <typename T, typename Tag, typename Base = CGAL::internal_np::No_property>
+struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
+{
+  typedef CGAL::Named_function_parameters<T, Tag, Base> Cgal_pack;
+  typedef Named_parameters<T, Tag, Base> self;
+
+  Named_parameters() : Cgal_pack() {}
+  explicit Named_parameters(const T& v) : Cgal_pack(v) {}
+  Named_parameters(const T& v, const Base& b) : Cgal_pack(v, b) {}
+
+  // CGAL's own parameters, returning our pack so that the chain keeps our members.
+#define CGAL_add_named_parameter(X, Y, Z)                                     \
+  template <typename K>                                                     \
+  Named_parameters<K, CGAL::internal_np::X, self> Z(const K& k) const       \
+  {                                                                         \
+    return Named_parameters<K, CGAL::internal_np::X, self>(k, *this);       \
+  }
+#include <CGAL/STL_Extension/internal/parameters_interface.h>
+#undef CGAL_add_named_parameter
+
+  // This project's parameters.
+#define CGAL_SHAPE_ANALYSIS_MEMBER(X, Y, Z)                                   \
+  template <typename K>                                                     \
+  Named_parameters<K, internal_np::X, self> Z(const K& k) const             \
+  {                                                                         \
+    return Named_parameters<K, internal_np::X, self>(k, *this);             \
+  }
+  CGAL_SHAPE_ANALYSIS_NAMED_PARAMETER_LIST(CGAL_SHAPE_ANALYSIS_MEMBER)
+#undef CGAL_SHAPE_ANALYSIS_MEMBER
+};
+
+namespace parameters {
+
+using CGAL::parameters::choose_parameter;
+using CGAL::parameters::get_parameter;
+using CGAL::parameters::get_parameter_reference;
+using CGAL::parameters::is_default_parameter;
+
+/// The empty pack: all parameters take their default values.
+typedef Named_parameters<bool, CGAL::internal_np::all_default_t> Default_named_parameters;
+
+/// \ingroup PkgShapeAnalysisCore
+/// The empty pack, start of a chain.
+/// \returns a pack in which every parameter takes its default value
+inline Default_named_parameters default_values() { return Default_named_parameters(); }
+
+// Starters for CGAL's parameters (so that `parameters::vertex_point_map(vpm)` can continue with
+// this project's members).
+#define CGAL_add_named_parameter(X, Y, Z)                                     \
+  template <typename K>                                                     \
+  Named_parameters<K, CGAL::internal_np::X> Z(const K& k)                   \
+  {                                                                         \
+    return Named_parameters<K, CGAL::internal_np::X>(k);                    \
+  }
+#include <CGAL/STL_Extension/internal/parameters_interface.h>
+#undef CGAL_add_named_parameter
+
+// Starters for this project's parameters.
+#define CGAL_SHAPE_ANALYSIS_STARTER(X, Y, Z)                                  \
+  template <typename K>                                                     \
+  Named_parameters<K, internal_np::X> Z(const K& k)                         \
+  {                                                                         \
+    return Named_parameters<K, internal_np::X>(k);                          \
+  }
+CGAL_SHAPE_ANALYSIS_NAMED_PARAMETER_LIST(CGAL_SHAPE_ANALYSIS_STARTER)
+#undef CGAL_SHAPE_ANALYSIS_STARTER
+
+/// Wraps a pack made by CGAL (for example `point_set.parameters()` or
+/// `CGAL::parameters::vertex_point_map(vpm)`) into this project's pack type, so that the chain
+/// can continue with this project's parameters: `extend(cgal_pack).number_of_segments(5)`.
+/// \ingroup PkgShapeAnalysisCore
+/// \param np a pack of named parameters made by \cgal
+/// \returns the same parameters as a `CGAL::Shape_analysis::Named_parameters` pack
+template <typename T, typename Tag>
+Named_parameters<T, Tag>
+extend(const CGAL::Named_function_parameters<T, Tag, CGAL::internal_np::No_property>& np)
+{
+  return Named_parameters<T, Tag>(np.v);
+}
+
+/// \cond SKIP_IN_MANUAL
+template <typename T, typename Tag, typename Base>
+auto extend(const CGAL::Named_function_parameters<T, Tag, Base>& np)
+{
+  auto base = extend(static_cast<const Base&>(np));
+  return Named_parameters<T, Tag, decltype(base)>(np.v, base);
+}
+/// \endcond
+
+} // namespace parameters
+
+namespace internal {
+
+// The value of a named parameter, or `default_value` when it is absent; converted to `Value`.
+template <typename Value, typename NP, typename Tag>
+Value parameter_value(const NP& np, Tag tag, const Value& default_value)
+{
+  return static_cast<Value>(
+    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, tag), default_value));
+}
+
+} // namespace internal
+
+} // namespace Shape_analysis
+
+// `Polygon_mesh_processing/measure.h` specializes `GetGeomTraits` for CGAL's pack so that an
+// overload taking a face range is not picked for a pack; our pack needs the same treatment.
+template <typename T, typename Tag, typename Base, typename NP>
+class GetGeomTraits<Shape_analysis::Named_parameters<T, Tag, Base>, NP>
+{
+public:
+  struct type {};
+};
+
+} // namespace CGAL
+
+#endif // CGAL_SHAPE_ANALYSIS_PARAMETERS_H
