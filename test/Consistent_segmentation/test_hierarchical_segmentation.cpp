@@ -8,6 +8,7 @@
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh/IO/OFF.h>
+#include <CGAL/boost/graph/generators.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
@@ -307,6 +308,41 @@ TEST(SeparatePieces, EachBoxIsOneSegment)
       segments_of_box[lm.labels[f]].insert(two[f]);
     for(std::size_t b = 0; b < 4; ++b)
       EXPECT_EQ(segments_of_box[b].size(), 1u) << "box " << b;
+  }
+}
+
+// Tens of components: 36 icosahedra ("pebbles") of different sizes in a 6 x 6 grid, neighbours
+// close to each other (proximity links), the last row far away (spanning links). With one
+// segment per pebble, every pebble must be exactly one segment; with fewer, none may be split.
+TEST(SeparatePieces, TensOfComponents)
+{
+  Mesh m;
+  std::vector<std::size_t> pebble_of_face;
+  const std::size_t rows = 6, columns = 6;
+  for(std::size_t r = 0; r < rows; ++r)
+    for(std::size_t c = 0; c < columns; ++c) {
+      const std::size_t id = r * columns + c;
+      const double radius = 0.6 + 0.02 * double(id);
+      const double y = r + 1 < rows ? 3.0 * double(r) : 40.0; // the last row is far away
+      const Point center(3.0 * double(c), y, 0.1 * double(id % 4));
+      CGAL::make_icosahedron<Mesh, Point>(m, center, radius);
+      pebble_of_face.resize(num_faces(m), id);
+    }
+  ASSERT_EQ(num_faces(m), rows * columns * 20);
+
+  std::size_t count = 0;
+  const std::vector<std::size_t> labels = segment_k(m, rows * columns, &count);
+  ASSERT_EQ(count, rows * columns);
+  EXPECT_EQ(SAI::rand_index(labels, pebble_of_face), 1.0);
+
+  for(std::size_t k : {5u, 12u}) {
+    const std::vector<std::size_t> fewer = segment_k(m, k, &count);
+    ASSERT_EQ(count, k);
+    std::vector<std::set<std::size_t>> segments_of_pebble(rows * columns);
+    for(std::size_t f = 0; f < fewer.size(); ++f)
+      segments_of_pebble[pebble_of_face[f]].insert(fewer[f]);
+    for(std::size_t p = 0; p < rows * columns; ++p)
+      EXPECT_EQ(segments_of_pebble[p].size(), 1u) << "pebble " << p << " split with k = " << k;
   }
 }
 
