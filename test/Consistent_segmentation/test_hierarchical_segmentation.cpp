@@ -362,6 +362,44 @@ TEST(RealMeshes, ElephantAndCamel)
   }
 }
 
+// A Surface_mesh with removed but uncollected faces (its face indices have gaps) is segmented
+// exactly like the same mesh after collect_garbage().
+TEST(RealMeshes, RemovedFacesAreIgnored)
+{
+  Mesh m = read_mesh("elephant.off");
+  std::vector<face_descriptor> doomed;
+  for(face_descriptor f : faces(m))
+    if(doomed.size() < 200 && (std::size_t(f) % 7 == 3))
+      doomed.push_back(f);
+  for(face_descriptor f : doomed)
+    CGAL::Euler::remove_face(halfedge(f, m), m);
+  ASSERT_TRUE(m.has_garbage());
+  // Remember each face across the compaction (collect_garbage() may reorder faces).
+  auto original = m.add_property_map<face_descriptor, std::size_t>("f:original", 0).first;
+  for(face_descriptor f : faces(m))
+    original[f] = std::size_t(f);
+  auto seg = m.add_property_map<face_descriptor, std::size_t>("f:segment", unset).first;
+  ASSERT_EQ(CS::hierarchical_segmentation(m, seg, CS::parameters::number_of_segments(6)), 6u);
+  std::map<std::size_t, std::size_t> with_garbage;
+  for(face_descriptor f : faces(m))
+    with_garbage[original[f]] = seg[f];
+  ASSERT_EQ(with_garbage.size(), m.number_of_faces());
+  // Removed faces do not count as faces.
+  EXPECT_THROW(CS::hierarchical_segmentation(
+                 m, seg, CS::parameters::number_of_segments(m.number_of_faces() + 1)),
+               CS::Bad_input);
+
+  m.collect_garbage();
+  ASSERT_FALSE(m.has_garbage());
+  ASSERT_EQ(CS::hierarchical_segmentation(m, seg, CS::parameters::number_of_segments(6)), 6u);
+  std::vector<std::size_t> before, after;
+  for(face_descriptor f : faces(m)) {
+    before.push_back(with_garbage.at(original[f]));
+    after.push_back(seg[f]);
+  }
+  EXPECT_EQ(SAI::rand_index(before, after), 1.0);
+}
+
 TEST(RealMeshes, ElephantWithHolesHasBoundaries)
 {
   const Mesh m = read_mesh("elephant-with-holes.off");

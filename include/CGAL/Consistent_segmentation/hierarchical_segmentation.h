@@ -146,10 +146,12 @@ std::size_t hierarchical_segmentation(const TriangleMesh& tm, FaceSegmentMap fac
 
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                               get_const_property_map(CGAL::vertex_point, tm));
-  auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  // Dense indices 0..n-1 over the faces that exist (removed faces of a Surface_mesh not counted).
+  const SA::internal::Dense_face_index_map<decltype(CGAL::get_initialized_face_index_map(tm, np))>
+    fim(tm, CGAL::get_initialized_face_index_map(tm, np), who);
 
   SA::internal::check_triangle_mesh(tm, vpm, who);
-  const std::size_t n = static_cast<std::size_t>(num_faces(tm));
+  const std::size_t n = fim.size();
 
   internal::Segmentation_options options;
   options.number_of_segments =

@@ -123,7 +123,11 @@ void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap f
     return Vector_3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
   };
 
-  const std::size_t n = static_cast<std::size_t>(num_faces(tm));
+  // Faces are counted through the index map (num_faces() of a Surface_mesh with removed faces
+  // counts them too): `fim` must map the faces to 0..n-1.
+  std::size_t n = 0;
+  for(auto f : faces(tm))
+    n = (std::max)(n, static_cast<std::size_t>(get(fim, f)) + 1);
   g = Dual_graph();
   g.node_size.assign(n, 0.0);
   g.node_position.assign(n, Vector_3d());

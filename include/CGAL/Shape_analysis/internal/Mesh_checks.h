@@ -12,8 +12,13 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>
 
+#include <boost/property_map/property_map.hpp>
+
 #include <cmath>
+#include <limits>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Shape_analysis {
@@ -48,6 +53,51 @@ void check_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, const std::
     ++index;
   }
 }
+
+// Face indices 0..n-1 over the faces that `faces(tm)` lists, from any face index map: a
+// `Surface_mesh` with removed but uncollected faces, or a user map with gaps, gives indices that
+// are not contiguous; this map renumbers them densely (in the order of the original indices).
+template <typename FaceIndexMap>
+class Dense_face_index_map
+{
+public:
+  typedef typename boost::property_traits<FaceIndexMap>::key_type key_type;
+  typedef std::size_t value_type;
+  typedef std::size_t reference;
+  typedef boost::readable_property_map_tag category;
+
+  template <typename FaceGraph>
+  Dense_face_index_map(const FaceGraph& tm, FaceIndexMap fim, const std::string& who)
+    : m_fim(fim), m_dense(std::make_shared<std::vector<std::size_t>>())
+  {
+    const std::size_t none = (std::numeric_limits<std::size_t>::max)();
+    std::vector<std::size_t>& dense = *m_dense;
+    for(auto f : faces(tm)) {
+      const std::size_t i = static_cast<std::size_t>(get(fim, f));
+      if(i >= dense.size())
+        dense.resize(i + 1, none);
+      if(dense[i] != none)
+        throw Bad_input(who + ": the face index map gives two faces the same index");
+      dense[i] = 0;
+    }
+    for(std::size_t& d : dense)
+      if(d != none)
+        d = m_size++;
+  }
+
+  // Number of faces.
+  std::size_t size() const { return m_size; }
+
+  friend std::size_t get(const Dense_face_index_map& m, const key_type& f)
+  {
+    return (*m.m_dense)[static_cast<std::size_t>(get(m.m_fim, f))];
+  }
+
+private:
+  FaceIndexMap m_fim;
+  std::shared_ptr<std::vector<std::size_t>> m_dense;
+  std::size_t m_size = 0;
+};
 
 } // namespace internal
 } // namespace Shape_analysis
