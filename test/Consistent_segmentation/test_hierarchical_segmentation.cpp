@@ -10,7 +10,9 @@
 #include <CGAL/Surface_mesh/IO/OFF.h>
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 
 #include <CGAL/Consistent_segmentation/hierarchical_segmentation.h>
 #include <CGAL/Shape_analysis/internal/Procedural_shapes.h>
@@ -467,6 +469,41 @@ TEST(Invariance, RigidTransform)
       scaled.point(v) = Point(37 * m.point(v).x(), 37 * m.point(v).y(), 37 * m.point(v).z());
     EXPECT_GE(SAI::rand_index(a, segment_k(scaled, 6)), 0.995);
   }
+}
+
+// Faces pointing inwards (every face reversed, or one component reversed) give the same
+// segmentation: each component is treated as oriented outwards.
+TEST(Invariance, Orientation)
+{
+  for(const std::string name : {"elephant.off", "camel.off", "elephant-with-holes.off"}) {
+    SCOPED_TRACE(name);
+    const Mesh m = read_mesh(name);
+    Mesh reversed = m;
+    PMP::reverse_face_orientations(reversed);
+    for(std::size_t k : {4u, 8u})
+      EXPECT_EQ(SAI::rand_index(segment_k(m, k), segment_k(reversed, k)), 1.0) << "k = " << k;
+  }
+  // blobby_3cc: reverse one of its three components only.
+  const Mesh m = read_mesh("blobby_3cc.off");
+  Mesh partly = m;
+  auto component = partly.add_property_map<face_descriptor, std::size_t>("f:cc", 0).first;
+  PMP::connected_components(partly, component);
+  std::vector<face_descriptor> first;
+  for(face_descriptor f : faces(partly))
+    if(component[f] == 0)
+      first.push_back(f);
+  PMP::reverse_face_orientations(first, partly);
+  EXPECT_EQ(SAI::rand_index(segment_k(m, 4), segment_k(partly, 4)), 1.0);
+}
+
+// A vertex that no face uses, however far, changes nothing.
+TEST(Invariance, UnusedVertex)
+{
+  const Mesh m = read_mesh("blobby_3cc.off");
+  Mesh with_extra = m;
+  with_extra.add_vertex(Point(1000, 1000, 1000));
+  for(std::size_t k : {2u, 4u})
+    EXPECT_EQ(SAI::rand_index(segment_k(m, k), segment_k(with_extra, k)), 1.0) << "k = " << k;
 }
 
 TEST(Invariance, FaceOrder)

@@ -1112,30 +1112,66 @@ TEST(PointTree, NearestMatchesBruteForce)
   EXPECT_FALSE(SAI::Point_tree().nearest(Vector_3d(), 1.0, id, d2)) << "an empty tree has no nearest";
 }
 
+TEST(PointTree, KNearestMatchesBruteForce)
+{
+  SAI::Procedural_random rng(5);
+  std::vector<Vector_3d> points;
+  std::vector<std::uint32_t> ids;
+  for(std::uint32_t i = 0; i < 300; ++i) {
+    points.emplace_back(rng.uniform(), rng.uniform(), rng.uniform());
+    ids.push_back(7 * i + 1);
+  }
+  const SAI::Point_tree tree(points, ids);
+  std::vector<std::pair<double, std::uint32_t>> result;
+  for(std::size_t k : {1u, 5u, 17u, 400u}) {
+    for(int q = 0; q < 50; ++q) {
+      const Vector_3d p(rng.uniform(-0.2, 1.2), rng.uniform(-0.2, 1.2), rng.uniform(-0.2, 1.2));
+      std::vector<std::pair<double, std::uint32_t>> expected;
+      for(std::uint32_t i = 0; i < points.size(); ++i)
+        expected.emplace_back((points[i] - p).squared_length(), ids[i]);
+      std::sort(expected.begin(), expected.end());
+      expected.resize((std::min)(k, expected.size()));
+      tree.k_nearest(p, k, result);
+      ASSERT_EQ(result.size(), expected.size());
+      for(std::size_t j = 0; j < expected.size(); ++j) {
+        EXPECT_EQ(result[j].first, expected[j].first) << "k " << k << " rank " << j;
+        EXPECT_EQ(result[j].second, expected[j].second) << "k " << k << " rank " << j;
+      }
+    }
+  }
+  SAI::Point_tree().k_nearest(Vector_3d(), 3, result);
+  EXPECT_TRUE(result.empty());
+}
+
 // ---------------------------------------------------------------------------------------------
 // Mesh checks
 
 TEST(MeshChecks, RefuseEmptyPolygonalAndNonFiniteMeshes)
 {
+  const SAI::Point_to_vector<Kernel> to_vector{};
   Mesh empty;
   try {
-    SAI::check_triangle_mesh(empty, get(CGAL::vertex_point, empty), "who");
+    SAI::check_triangle_mesh(empty, get(CGAL::vertex_point, empty), to_vector, "who");
     FAIL() << "no exception";
   } catch(const SA::Bad_input& e) {
     EXPECT_NE(std::string(e.what()).find("who"), std::string::npos);
     EXPECT_NE(std::string(e.what()).find("no faces"), std::string::npos);
   }
   Mesh quad = make_mesh({Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0)}, {{0, 1, 2, 3}});
-  EXPECT_THROW(SAI::check_triangle_mesh(quad, get(CGAL::vertex_point, quad), "who"), SA::Bad_input);
+  EXPECT_THROW(SAI::check_triangle_mesh(quad, get(CGAL::vertex_point, quad), to_vector, "who"), SA::Bad_input);
   Mesh cube = unit_cube();
-  EXPECT_NO_THROW(SAI::check_triangle_mesh(cube, get(CGAL::vertex_point, cube), "who"));
+  EXPECT_NO_THROW(SAI::check_triangle_mesh(cube, get(CGAL::vertex_point, cube), to_vector, "who"));
   cube.point(*vertices(cube).begin()) = Point(std::numeric_limits<double>::quiet_NaN(), 0, 0);
   try {
-    SAI::check_triangle_mesh(cube, get(CGAL::vertex_point, cube), "who");
+    SAI::check_triangle_mesh(cube, get(CGAL::vertex_point, cube), to_vector, "who");
     FAIL() << "no exception";
   } catch(const SA::Bad_input& e) {
     EXPECT_NE(std::string(e.what()).find("finite"), std::string::npos);
   }
+  // A non-finite vertex that no face uses is not looked at.
+  Mesh tetra = unit_cube();
+  tetra.add_vertex(Point(std::numeric_limits<double>::infinity(), 0, 0));
+  EXPECT_NO_THROW(SAI::check_triangle_mesh(tetra, get(CGAL::vertex_point, tetra), to_vector, "who"));
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -51,13 +51,16 @@ Segment ids are `0 .. n-1`, numbered by decreasing area. The result depends on t
 the connectivity of the mesh; the order of its faces only matters where two merges are equally
 good up to rounding.
 
-\tparam TriangleMesh a model of `FaceListGraph` (for example `CGAL::Surface_mesh` or
-        `CGAL::Polyhedron_3`)
+\tparam TriangleMesh a model of `FaceListGraph` and `EdgeListGraph` (for example
+        `CGAL::Surface_mesh` or `CGAL::Polyhedron_3`)
 \tparam FaceSegmentMap a model of `WritablePropertyMap` with
         `boost::graph_traits<TriangleMesh>::%face_descriptor` as key and an integer type as value
 \tparam NamedParameters a sequence of named parameters
 
-\param tm the triangle mesh; it must be non-empty, have only triangle faces and finite coordinates
+\param tm the triangle mesh; it must be non-empty, have only triangle faces, finite coordinates and
+          a positive area. A closed (or nearly closed) connected component is treated as
+          oriented outwards whatever its orientation; an open surface keeps its orientation,
+          which decides which of its creases are concave.
 \param face_segment_map receives the segment id of every face
 \param np an optional sequence of named parameters among the ones listed below
 
@@ -118,9 +121,15 @@ good up to rounding.
       a point type of a CGAL kernel as value}
     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
   \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class, used to read the coordinates
+      of the points}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  \cgalParamNEnd
   \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index between
-      `0` and `num_faces(tm) - 1`}
+    \cgalParamDescription{a property map associating to each face of `tm` a unique index (the
+      indices need not be contiguous)}
     \cgalParamType{a class model of `ReadablePropertyMap` with `face_descriptor` as key and
       `std::size_t` as value}
     \cgalParamDefault{an automatically indexed internal map}
@@ -129,8 +138,8 @@ good up to rounding.
 
 \returns the number of segments written to `face_segment_map`
 
-\throws CGAL::Shape_analysis::Bad_input if `tm` has no faces, a face that is not a triangle or a
-        coordinate that is not finite, or if a parameter is out of its range; `face_segment_map`
+\throws CGAL::Shape_analysis::Bad_input if `tm` has no faces, a face that is not a triangle, a
+        coordinate that is not finite or no area, or if a parameter is out of its range; `face_segment_map`
         is then left untouched.
 */
 template <typename TriangleMesh, typename FaceSegmentMap,
@@ -150,7 +159,11 @@ std::size_t hierarchical_segmentation(const TriangleMesh& tm, FaceSegmentMap fac
   const SA::internal::Dense_face_index_map<decltype(CGAL::get_initialized_face_index_map(tm, np))>
     fim(tm, CGAL::get_initialized_face_index_map(tm, np), who);
 
-  SA::internal::check_triangle_mesh(tm, vpm, who);
+  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
+  const SA::internal::Point_to_vector<Geom_traits> to_vector{
+    choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits))};
+
+  SA::internal::check_triangle_mesh(tm, vpm, to_vector, who);
   const std::size_t n = fim.size();
 
   internal::Segmentation_options options;
@@ -171,7 +184,9 @@ std::size_t hierarchical_segmentation(const TriangleMesh& tm, FaceSegmentMap fac
   internal::check_options(options, n, who);
 
   SA::internal::Dual_graph graph;
-  SA::internal::build_dual_graph(tm, vpm, fim, options.concavity_exponent, graph);
+  SA::internal::build_dual_graph(tm, vpm, fim, options.concavity_exponent, graph, to_vector);
+  if(!(graph.total_size() > 0))
+    throw Bad_input(who + ": every face of the mesh has zero area");
 
   auto prior = get_parameter(np, snp::prior_segment_map_tag);
   constexpr bool has_prior =

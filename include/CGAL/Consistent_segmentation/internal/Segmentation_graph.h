@@ -88,15 +88,16 @@ inline std::vector<std::size_t> segment_dual_graph(CGAL::Shape_analysis::interna
                                                    const std::vector<long long>* prior_labels)
 {
   namespace SAI = CGAL::Shape_analysis::internal;
-  if(prior_labels != nullptr)
-    for(std::size_t e = 0; e < g.number_of_edges(); ++e)
-      if((*prior_labels)[g.edge_source[e]] != (*prior_labels)[g.edge_target[e]])
-        g.cut_cost[e] /= o.prior_boundary_factor;
-
   SAI::Component_link_options link_options;
   link_options.link_distance = o.component_link_distance;
   link_options.factor = o.component_link_factor;
   SAI::add_component_links(g, link_options);
+
+  // Prior boundaries (after the links, whose cost is relative to the plain mesh-edge costs).
+  if(prior_labels != nullptr)
+    for(std::size_t e = 0; e < g.number_of_edges(); ++e)
+      if((*prior_labels)[g.edge_source[e]] != (*prior_labels)[g.edge_target[e]])
+        g.cut_cost[e] /= o.prior_boundary_factor;
 
   SAI::Normalized_cut_clustering clustering(g.node_size, g.edge_source, g.edge_target, g.cut_cost);
   const std::size_t n = g.number_of_nodes();

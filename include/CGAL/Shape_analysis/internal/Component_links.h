@@ -6,20 +6,25 @@
 
 // Weak edges between the connected components of a dual graph, so that a model made of several
 // pieces is analysed as one object (thesis, section 3.3):
-//  - every face is linked to the nearest face (centroid distance d) of each other component
-//    closer than `link_distance * D` (D = bounding-box diagonal);
+//  - every face is linked to the nearest face (centroid distance d) of other components closer
+//    than `link_distance * D` (D = bounding-box diagonal); to bound the work on scenes of many
+//    pieces, only the `max_candidate_components` components nearest to its own (by bounding
+//    box) are searched, and a face keeps its `max_links_per_face` nearest such links;
 //  - with d_eps = epsilon * D, d' = 1.2 (d + d_eps) and d'' = d' / d_eps, a link costs
 //    factor * (mean cut cost of the mesh edges) / (1 + d'') to cut and d' to traverse;
-//  - components still apart after that (far from everything) are joined along a spanning tree of
-//    their nearest face pairs, with the same cost formula, so that the graph is connected.
+//  - components still apart after that (far from everything) are joined by a spanning tree of
+//    short links between nearby components (same cost formula), so that the graph is connected.
+// The work is O(n log n) in the number n of faces for any number of components.
 
 #include <CGAL/Shape_analysis/internal/Dual_graph.h>
 #include <CGAL/Shape_analysis/internal/Point_tree.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -32,10 +37,10 @@ struct Component_link_options
   double link_distance = 0.1; // fraction of the bounding-box diagonal
   double epsilon = 0.005;     // fraction of the bounding-box diagonal
   double factor = 0.01;       // k_cc
-  // Above this many components, only the spanning links are added (bounded work on soups).
-  std::size_t max_components_for_proximity_links = 2000;
-  // Each face is linked to at most this many other components (the nearest by bounding box).
-  std::size_t max_linked_components_per_component = 32;
+  // Components searched for the links of one component's faces (the nearest by bounding box).
+  std::size_t max_candidate_components = 8;
+  // Links kept per face (to its nearest other components).
+  std::size_t max_links_per_face = 2;
 };
 
 // Connected components of the graph (over all its edges); returns their number.
@@ -93,7 +98,7 @@ public:
     const std::size_t count = graph_components(m_g, component);
     if(count <= 1)
       return count;
-    if(count <= m_options.max_components_for_proximity_links && m_options.link_distance > 0)
+    if(m_options.link_distance > 0)
       add_proximity_links(component, count);
     connect_remaining();
     m_g.build_adjacency();
@@ -107,6 +112,7 @@ private:
     Vector_3d lo{std::numeric_limits<double>::infinity()};
     Vector_3d hi{-std::numeric_limits<double>::infinity()};
     Point_tree tree;
+    Vector_3d centre() const { return (lo + hi) * 0.5; }
   };
 
   static double squared_distance_to_box(const Vector_3d& p, const Vector_3d& lo, const Vector_3d& hi)
@@ -149,6 +155,42 @@ private:
     return comps;
   }
 
+  // Candidate neighbours of every component, nearest first by (squared box distance, id): all
+  // other components when there are few, otherwise those among the nearest by box centre.
+  std::vector<std::vector<std::pair<double, std::uint32_t>>>
+  candidate_components(const std::vector<Component>& comps, std::size_t keep) const
+  {
+    const std::size_t count = comps.size();
+    std::vector<std::vector<std::pair<double, std::uint32_t>>> result(count);
+    if(count <= 64) {
+      for(std::size_t a = 0; a < count; ++a)
+        for(std::size_t b = 0; b < count; ++b)
+          if(a != b)
+            result[a].emplace_back(squared_box_distance(comps[a], comps[b]), std::uint32_t(b));
+    } else {
+      std::vector<Vector_3d> centres;
+      std::vector<std::uint32_t> ids;
+      for(std::size_t c = 0; c < count; ++c) {
+        centres.push_back(comps[c].centre());
+        ids.push_back(static_cast<std::uint32_t>(c));
+      }
+      const Point_tree tree(centres, ids);
+      std::vector<std::pair<double, std::uint32_t>> near;
+      for(std::size_t a = 0; a < count; ++a) {
+        tree.k_nearest(centres[a], 2 * keep + 1, near);
+        for(const auto& nb : near)
+          if(nb.second != a)
+            result[a].emplace_back(squared_box_distance(comps[a], comps[nb.second]), nb.second);
+      }
+    }
+    for(auto& list : result) {
+      std::sort(list.begin(), list.end());
+      if(list.size() > keep)
+        list.resize(keep);
+    }
+    return result;
+  }
+
   void add_link(std::uint32_t a, std::uint32_t b, double distance)
   {
     const double eps = m_options.epsilon * m_diagonal;
@@ -163,32 +205,31 @@ private:
     const std::vector<Component> comps = make_components(component, count);
     const double r = m_options.link_distance * m_diagonal;
     const double r2 = r * r;
+    const auto candidates = candidate_components(comps, m_options.max_candidate_components);
     std::vector<std::pair<std::uint64_t, double>> links;
+    std::vector<std::pair<double, std::uint32_t>> found; // (squared distance, face) of one face
     for(std::size_t a = 0; a < count; ++a) {
-      std::vector<std::pair<double, std::size_t>> near;
-      for(std::size_t b = 0; b < count; ++b)
-        if(b != a) {
-          const double d = squared_box_distance(comps[a], comps[b]);
-          if(d < r2)
-            near.emplace_back(d, b);
-        }
-      if(near.size() > m_options.max_linked_components_per_component) {
-        std::nth_element(near.begin(), near.begin() + m_options.max_linked_components_per_component,
-                         near.end());
-        near.resize(m_options.max_linked_components_per_component);
-      }
-      for(const auto& nb : near) {
-        const Component& other = comps[nb.second];
-        for(std::uint32_t f : comps[a].faces) {
-          const Vector_3d& p = m_g.node_position[f];
+      for(std::uint32_t f : comps[a].faces) {
+        const Vector_3d& p = m_g.node_position[f];
+        found.clear();
+        for(const auto& nb : candidates[a]) {
+          if(nb.first >= r2)
+            break;
+          const Component& other = comps[nb.second];
           if(squared_distance_to_box(p, other.lo, other.hi) >= r2)
             continue;
           std::uint32_t g;
           double d2;
-          if(other.tree.nearest(p, r2, g, d2)) {
-            const std::uint32_t lo = (std::min)(f, g), hi = (std::max)(f, g);
-            links.emplace_back((std::uint64_t(lo) << 32) | hi, std::sqrt(d2));
-          }
+          if(other.tree.nearest(p, r2, g, d2))
+            found.emplace_back(d2, g);
+        }
+        if(found.size() > m_options.max_links_per_face) {
+          std::sort(found.begin(), found.end());
+          found.resize(m_options.max_links_per_face);
+        }
+        for(const auto& x : found) {
+          const std::uint32_t lo = (std::min)(f, x.second), hi = (std::max)(f, x.second);
+          links.emplace_back((std::uint64_t(lo) << 32) | hi, std::sqrt(x.first));
         }
       }
     }
@@ -199,24 +240,35 @@ private:
                  static_cast<std::uint32_t>(links[i].first & 0xffffffffu), links[i].second);
   }
 
-  // Nearest face pair between two components, searching from at most `samples` faces of `a`.
-  static void nearest_pair(const Component& a, const Component& b, std::size_t samples,
-                           std::uint32_t& fa, std::uint32_t& fb, double& d2,
-                           const std::vector<Vector_3d>& positions)
+  // Nearest face pair between two components, searched from at most `samples` faces of the
+  // smaller one (evenly spread in its face order) into the tree of the larger one.
+  void nearest_pair(const Component& a, const Component& b, std::uint32_t& fa, std::uint32_t& fb,
+                    double& d2) const
   {
+    const bool swap = a.faces.size() > b.faces.size();
+    const Component& from = swap ? b : a;
+    const Component& into = swap ? a : b;
+    const std::size_t samples = 64;
+    const std::size_t step = (std::max<std::size_t>)(1, from.faces.size() / samples);
     d2 = std::numeric_limits<double>::infinity();
-    const std::size_t step = (std::max<std::size_t>)(1, a.faces.size() / samples);
-    for(std::size_t k = 0; k < a.faces.size(); k += step) {
+    std::uint32_t best_from = from.faces.front(), best_into = into.faces.front();
+    for(std::size_t k = 0; k < from.faces.size(); k += step) {
       std::uint32_t g;
       double d;
-      if(b.tree.nearest(positions[a.faces[k]], d2, g, d) && d < d2) {
+      if(into.tree.nearest(m_g.node_position[from.faces[k]], d2, g, d) && d < d2) {
         d2 = d;
-        fa = a.faces[k];
-        fb = g;
+        best_from = from.faces[k];
+        best_into = g;
       }
     }
+    if(!(d2 < std::numeric_limits<double>::infinity()))
+      d2 = (m_g.node_position[best_from] - m_g.node_position[best_into]).squared_length();
+    fa = swap ? best_into : best_from;
+    fb = swap ? best_from : best_into;
   }
 
+  // Joins the components left apart: Kruskal's spanning forest over the pairs of components near
+  // each other (by bounding box), then a chain of what is still apart along the longest axis.
   void connect_remaining()
   {
     std::vector<std::uint32_t> component;
@@ -224,58 +276,56 @@ private:
     if(count <= 1)
       return;
     const std::vector<Component> comps = make_components(component, count);
-    const std::size_t samples = 64;
-    if(count <= 128) {
-      // Prim's spanning tree over the components, distances from sampled nearest pairs.
-      std::vector<double> best(count, std::numeric_limits<double>::infinity());
-      std::vector<std::uint32_t> best_a(count), best_b(count);
-      std::vector<char> in_tree(count, 0);
-      std::size_t current = 0;
-      in_tree[0] = 1;
-      for(std::size_t step = 1; step < count; ++step) {
-        for(std::size_t c = 0; c < count; ++c) {
-          if(in_tree[c])
-            continue;
-          std::uint32_t fa = 0, fb = 0;
-          double d2;
-          nearest_pair(comps[c], comps[current], samples, fa, fb, d2, m_g.node_position);
-          if(d2 < best[c]) {
-            best[c] = d2;
-            best_a[c] = fa;
-            best_b[c] = fb;
-          }
-        }
-        std::size_t next = count;
-        for(std::size_t c = 0; c < count; ++c)
-          if(!in_tree[c] && (next == count || best[c] < best[next]))
-            next = c;
-        in_tree[next] = 1;
-        add_link(best_a[next], best_b[next], std::sqrt(best[next]));
-        current = next;
+    const auto candidates = candidate_components(comps, 8);
+    std::vector<std::tuple<double, std::uint32_t, std::uint32_t>> pairs;
+    for(std::size_t a = 0; a < count; ++a)
+      for(const auto& nb : candidates[a])
+        pairs.emplace_back(nb.first, (std::min)(std::uint32_t(a), nb.second),
+                           (std::max)(std::uint32_t(a), nb.second));
+    std::sort(pairs.begin(), pairs.end());
+    std::vector<std::uint32_t> parent(count);
+    std::iota(parent.begin(), parent.end(), 0u);
+    auto find = [&](std::uint32_t x) {
+      while(parent[x] != x) {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
       }
-    } else {
-      // Many components: chain them along the longest axis of the bounding box.
-      Vector_3d lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-      for(const Component& c : comps) {
-        lo = lo.min(c.lo);
-        hi = hi.max(c.hi);
+      return x;
+    };
+    auto join = [&](std::uint32_t a, std::uint32_t b) {
+      std::uint32_t fa = 0, fb = 0;
+      double d2 = 0;
+      nearest_pair(comps[a], comps[b], fa, fb, d2);
+      add_link(fa, fb, std::sqrt(d2));
+      parent[(std::max)(find(a), find(b))] = (std::min)(find(a), find(b));
+    };
+    std::size_t groups = count;
+    for(const auto& p : pairs)
+      if(find(std::get<1>(p)) != find(std::get<2>(p))) {
+        join(std::get<1>(p), std::get<2>(p));
+        --groups;
       }
-      const Vector_3d extent = hi - lo;
-      const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-      std::vector<std::size_t> order(count);
-      std::iota(order.begin(), order.end(), std::size_t(0));
-      std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        const double ca = comps[a].lo[axis] + comps[a].hi[axis];
-        const double cb = comps[b].lo[axis] + comps[b].hi[axis];
-        return ca != cb ? ca < cb : a < b;
-      });
-      for(std::size_t k = 1; k < count; ++k) {
-        std::uint32_t fa = 0, fb = 0;
-        double d2;
-        nearest_pair(comps[order[k]], comps[order[k - 1]], 8, fa, fb, d2, m_g.node_position);
-        add_link(fa, fb, std::sqrt(d2));
-      }
+    if(groups <= 1)
+      return;
+    // Still apart (clusters of components far from each other): chain one component of each
+    // group, in the order of their centres along the longest axis of the whole box.
+    Vector_3d lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for(const Component& c : comps) {
+      lo = lo.min(c.lo);
+      hi = hi.max(c.hi);
     }
+    const Vector_3d extent = hi - lo;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    std::vector<std::uint32_t> representatives;
+    for(std::uint32_t c = 0; c < count; ++c)
+      if(find(c) == c)
+        representatives.push_back(c);
+    std::sort(representatives.begin(), representatives.end(), [&](std::uint32_t a, std::uint32_t b) {
+      const double ca = comps[a].centre()[axis], cb = comps[b].centre()[axis];
+      return ca != cb ? ca < cb : a < b;
+    });
+    for(std::size_t k = 1; k < representatives.size(); ++k)
+      join(representatives[k - 1], representatives[k]);
   }
 
   Dual_graph& m_g;

@@ -12,12 +12,16 @@
 // Node sizes are face areas. Each graph edge remembers the mesh edge it crosses (its rank in the
 // iteration order of `edges(tm)`), or `no_mesh_edge` for an edge added later (component links).
 
+#include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/internal/Vector_3d.h>
+
+#include <CGAL/Kernel_traits.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>
 #include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -39,7 +43,7 @@ struct Dual_graph
   // Nodes.
   std::vector<double> node_size;        // face area
   std::vector<Vector_3d> node_position; // face centroid
-  std::vector<Vector_3d> node_normal;   // unit normal (zero for a degenerate face)
+  std::vector<Vector_3d> node_normal;   // unit normal, outwards (zero for a degenerate face)
 
   // Undirected edges.
   std::vector<std::uint32_t> edge_source;
@@ -109,48 +113,115 @@ inline double concavity_weight(double phi, bool concave, double alpha)
   return (std::max)(Dual_graph::min_weight, (std::min)(1.0, std::pow(theta_over_pi, alpha)));
 }
 
-// Builds the dual graph of a triangle mesh. `fim` maps faces to 0..n-1. Coordinates are read
-// through `vpm` and converted to double.
-template <typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap>
+// Reads the coordinates of a point as doubles through the functors of a geometric traits class
+// (a CGAL kernel).
+template <typename GeomTraits>
+struct Point_to_vector
+{
+  GeomTraits gt;
+  template <typename Point>
+  Vector_3d operator()(const Point& p) const
+  {
+    return Vector_3d(CGAL::to_double(gt.compute_x_3_object()(p)),
+                     CGAL::to_double(gt.compute_y_3_object()(p)),
+                     CGAL::to_double(gt.compute_z_3_object()(p)));
+  }
+};
+
+// Builds the dual graph of a triangle mesh. `fim` maps the faces to 0..n-1; `to_vector` turns
+// the points of `vpm` into Vector_3d.
+//
+// Concavity needs the outward orientation. A halfedge mesh is consistently oriented within each
+// connected component; a component that is closed or nearly closed (border edges under 30% of
+// its edge length, e.g. a scan with a few holes) and whose faces point inwards (negative signed
+// volume, measured from its centroid) has its normals flipped, so that the result does not
+// depend on the orientation the file happened to have. An open surface (a strip, a terrain)
+// has no inside: it keeps the orientation it was given.
+template <typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap, typename ToVector>
 void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap fim, double alpha,
-                      Dual_graph& g)
+                      Dual_graph& g, const ToVector& to_vector)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
 
-  auto point = [&](typename GT::vertex_descriptor v) {
-    const auto& p = get(vpm, v);
-    return Vector_3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  };
+  auto point = [&](typename GT::vertex_descriptor v) { return to_vector(get(vpm, v)); };
 
   // Faces are counted through the index map (num_faces() of a Surface_mesh with removed faces
   // counts them too): `fim` must map the faces to 0..n-1.
   std::size_t n = 0;
   for(auto f : faces(tm))
     n = (std::max)(n, static_cast<std::size_t>(get(fim, f)) + 1);
+  if(n >= std::size_t((std::numeric_limits<std::uint32_t>::max)()))
+    throw Bad_input("the mesh has too many faces (at most 2^32 - 2)");
   g = Dual_graph();
   g.node_size.assign(n, 0.0);
   g.node_position.assign(n, Vector_3d());
   g.node_normal.assign(n, Vector_3d());
 
+  // Faces: area, centroid, normal; bounding box of the face corners (unused vertices ignored).
   Vector_3d lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  for(auto v : vertices(tm)) {
-    const Vector_3d p = point(v);
-    lo = lo.min(p);
-    hi = hi.max(p);
-  }
-  g.bbox_diagonal = num_vertices(tm) > 0 ? (hi - lo).length() : 0.0;
-
   for(auto f : faces(tm)) {
     const std::size_t i = static_cast<std::size_t>(get(fim, f));
     const halfedge_descriptor h = halfedge(f, tm);
     const Vector_3d p = point(source(h, tm)), q = point(target(h, tm)),
                     r = point(target(next(h, tm), tm));
+    lo = lo.min(p).min(q).min(r);
+    hi = hi.max(p).max(q).max(r);
     const Vector_3d c = cross(q - p, r - p);
     const double twice_area = c.length();
     g.node_size[i] = 0.5 * twice_area;
     g.node_position[i] = (p + q + r) / 3.0;
     g.node_normal[i] = twice_area > 0 ? c / twice_area : Vector_3d();
+  }
+  g.bbox_diagonal = n > 0 ? (hi - lo).length() : 0.0;
+
+  // Connected components through interior edges, then one orientation per component.
+  std::vector<std::uint32_t> parent(n);
+  for(std::size_t i = 0; i < n; ++i)
+    parent[i] = static_cast<std::uint32_t>(i);
+  auto find = [&](std::uint32_t x) {
+    while(parent[x] != x) {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  };
+  for(auto e : edges(tm)) {
+    const halfedge_descriptor h = halfedge(e, tm), ho = opposite(h, tm);
+    if(is_border(h, tm) || is_border(ho, tm))
+      continue;
+    const std::uint32_t a = find(static_cast<std::uint32_t>(get(fim, face(h, tm))));
+    const std::uint32_t b = find(static_cast<std::uint32_t>(get(fim, face(ho, tm))));
+    if(a != b)
+      parent[(std::max)(a, b)] = (std::min)(a, b);
+  }
+  std::vector<double> border_length(n, 0.0), edge_length_sum(n, 0.0);
+  for(auto e : edges(tm)) {
+    const halfedge_descriptor h = halfedge(e, tm), ho = opposite(h, tm);
+    const bool border = is_border(h, tm) || is_border(ho, tm);
+    const auto f = face(is_border(h, tm) ? ho : h, tm);
+    const std::uint32_t c = find(static_cast<std::uint32_t>(get(fim, f)));
+    const double length = (point(target(h, tm)) - point(source(h, tm))).length();
+    edge_length_sum[c] += length;
+    if(border)
+      border_length[c] += length;
+  }
+  std::vector<Vector_3d> weighted_centroid(n);
+  std::vector<double> area(n, 0.0), signed_volume(n, 0.0);
+  for(std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t c = find(static_cast<std::uint32_t>(i));
+    weighted_centroid[c] += g.node_position[i] * g.node_size[i];
+    area[c] += g.node_size[i];
+  }
+  for(std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t c = find(static_cast<std::uint32_t>(i));
+    const Vector_3d centre = area[c] > 0 ? weighted_centroid[c] / area[c] : Vector_3d();
+    signed_volume[c] += dot(g.node_position[i] - centre, g.node_normal[i]) * g.node_size[i];
+  }
+  for(std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t c = find(static_cast<std::uint32_t>(i));
+    if(signed_volume[c] < 0 && border_length[c] < 0.3 * edge_length_sum[c])
+      g.node_normal[i] *= -1.0;
   }
 
   std::size_t rank = 0;
@@ -174,7 +245,8 @@ void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap f
     if(nf.squared_length() > 0 && no.squared_length() > 0) {
       const double cos_phi = (std::max)(-1.0, (std::min)(1.0, dot(nf, no)));
       const double phi = std::acos(cos_phi);
-      // Concave when the apex of the other face lies above the plane of this face.
+      // Concave when the apex of the other face lies above the plane of this face (normals
+      // point outwards after the orientation above).
       const Vector_3d s = point(target(next(ho, tm), tm));
       const bool concave = dot(nf, s - p) > 0;
       w = concavity_weight(phi, concave, alpha);
@@ -186,6 +258,16 @@ void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap f
   g.number_of_mesh_edges = rank;
   g.mean_mesh_edge_length = rank > 0 ? length_sum / double(rank) : 0.0;
   g.build_adjacency();
+}
+
+// The same, with the points of `vpm` read as the points of a CGAL kernel (x(), y(), z()).
+template <typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap>
+void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap fim, double alpha,
+                      Dual_graph& g)
+{
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
+  build_dual_graph(tm, vpm, fim, alpha, g, Point_to_vector<Kernel>());
 }
 
 } // namespace internal

@@ -7,6 +7,7 @@
 // Checks shared by the public entry points: what they need of a mesh, with a one-line reason.
 
 #include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/internal/Vector_3d.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -24,9 +25,12 @@ namespace CGAL {
 namespace Shape_analysis {
 namespace internal {
 
-// Throws Bad_input unless `tm` is a non-empty triangle mesh with finite coordinates.
-template <typename TriangleMesh, typename VertexPointMap>
-void check_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, const std::string& who)
+// Throws Bad_input unless `tm` is a non-empty triangle mesh whose face corners have finite
+// coordinates (read with `to_vector`, a functor from points to Vector_3d). Unused vertices are
+// not looked at.
+template <typename TriangleMesh, typename VertexPointMap, typename ToVector>
+void check_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, const ToVector& to_vector,
+                         const std::string& who)
 {
   if(faces(tm).empty())
     throw Bad_input(who + ": the mesh has no faces");
@@ -34,22 +38,16 @@ void check_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, const std::
   for(auto f : faces(tm)) {
     std::size_t degree = 0;
     for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-      (void)h;
       if(++degree > 3)
         break;
+      const Vector_3d p = to_vector(get(vpm, target(h, tm)));
+      if(!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        throw Bad_input(who + ": a corner of face " + std::to_string(index) +
+                        " has a coordinate that is not a finite number");
     }
     if(degree != 3)
       throw Bad_input(who + ": face " + std::to_string(index) +
                       " is not a triangle; triangulate the mesh first");
-    ++index;
-  }
-  index = 0;
-  for(auto v : vertices(tm)) {
-    const auto& p = get(vpm, v);
-    if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
-       !std::isfinite(CGAL::to_double(p.z())))
-      throw Bad_input(who + ": vertex " + std::to_string(index) +
-                      " has a coordinate that is not a finite number");
     ++index;
   }
 }

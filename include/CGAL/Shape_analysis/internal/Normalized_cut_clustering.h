@@ -253,7 +253,8 @@ private:
     const double w_st = weight_between(s, t);
 
     // Merge the sorted neighbor lists, dropping s and t.
-    std::vector<std::pair<Id, double>> merged;
+    std::vector<std::pair<Id, double>>& merged = m_buffer; // reused across merges
+    merged.clear();
     merged.reserve(m_adjacency[s].size() + m_adjacency[t].size());
     auto i = m_adjacency[s].begin(), ie = m_adjacency[s].end();
     auto j = m_adjacency[t].begin(), je = m_adjacency[t].end();
@@ -285,7 +286,7 @@ private:
       else
         list.insert(it_s, std::make_pair(s, w));
     }
-    m_adjacency[s].swap(merged);
+    m_adjacency[s].swap(merged); // the old list of s becomes the buffer
     std::vector<std::pair<Id, double>>().swap(m_adjacency[t]);
 
     m_cut[s] = (std::max)(0.0, m_cut[s] + m_cut[t] - 2 * w_st);
@@ -305,6 +306,7 @@ private:
   std::vector<char> m_alive;
   std::vector<std::vector<std::pair<Id, double>>> m_adjacency;
   std::vector<Merge> m_merges;
+  std::vector<std::pair<Id, double>> m_buffer;
   std::size_t m_number_of_clusters = 0;
   std::function<bool(Id, Id)> m_can_merge;
   double m_randomness = 0;

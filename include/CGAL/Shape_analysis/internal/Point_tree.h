@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -53,7 +54,59 @@ public:
     return true;
   }
 
+  // The ids of the (at most) `k` nearest points to `q`, nearest first, with their squared
+  // distances, in `result` (cleared first).
+  void k_nearest(const Vector_3d& q, std::size_t k,
+                 std::vector<std::pair<double, std::uint32_t>>& result) const
+  {
+    result.clear();
+    if(m_points.empty() || k == 0)
+      return;
+    search_k(0, m_points.size(), 0, q, k, result);
+    std::sort(result.begin(), result.end());
+    for(auto& r : result)
+      r.second = m_ids[r.second];
+  }
+
 private:
+  // `heap` is a max-heap on (squared distance, position) of the best candidates so far.
+  void search_k(std::size_t begin, std::size_t end, int depth, const Vector_3d& q, std::size_t k,
+                std::vector<std::pair<double, std::uint32_t>>& heap) const
+  {
+    auto offer = [&](std::uint32_t position) {
+      const std::pair<double, std::uint32_t> c((m_points[position] - q).squared_length(), position);
+      if(heap.size() < k) {
+        heap.push_back(c);
+        std::push_heap(heap.begin(), heap.end());
+      } else if(c < heap.front()) {
+        std::pop_heap(heap.begin(), heap.end());
+        heap.back() = c;
+        std::push_heap(heap.begin(), heap.end());
+      }
+    };
+    if(end - begin <= leaf_size) {
+      for(std::size_t i = begin; i < end; ++i)
+        offer(m_order[i]);
+      return;
+    }
+    const int axis = depth % 3;
+    const std::size_t mid = (begin + end) / 2;
+    const std::uint32_t position = m_order[mid];
+    offer(position);
+    const double diff = q[axis] - m_points[position][axis];
+    const bool left_first = diff < 0;
+    if(left_first)
+      search_k(begin, mid, depth + 1, q, k, heap);
+    else
+      search_k(mid + 1, end, depth + 1, q, k, heap);
+    if(heap.size() < k || diff * diff <= heap.front().first) {
+      if(left_first)
+        search_k(mid + 1, end, depth + 1, q, k, heap);
+      else
+        search_k(begin, mid, depth + 1, q, k, heap);
+    }
+  }
+
   void build(std::size_t begin, std::size_t end, int depth)
   {
     if(end - begin <= leaf_size)
