@@ -3,11 +3,8 @@
 # coloured meshes (open them in MeshLab or CloudCompare), Princeton-benchmark label files and
 # JSON reports to build/demo/. Installs missing Debian packages and builds the tool first.
 set -euo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-"$root/scripts/install_dependencies.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-jobs="$(nproc 2>/dev/null || echo 2)"
-cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$root/build" --parallel "$jobs" --target shape_analysis
 
 tool="$root/build/src/shape_analysis"

@@ -25,7 +25,7 @@ echo "Installing missing Debian packages: ${missing[*]}" >&2
 if [ "$(id -u)" -eq 0 ]; then
   sudo_cmd=()
 elif command -v sudo >/dev/null 2>&1; then
-  sudo_cmd=(sudo)
+  sudo_cmd=(sudo -n) # never wait for a password (CI)
 else
   echo "error: missing packages (${missing[*]}) and not root; install them with apt-get" >&2
   exit 1

@@ -6,11 +6,15 @@
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -22,7 +26,7 @@ namespace shape_analysis_cli {
 namespace fs = std::filesystem;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-Mesh read_triangle_mesh(const std::string& path)
+Input_mesh read_triangle_mesh(const std::string& path)
 {
   std::error_code ec;
   if(!fs::exists(path, ec))
@@ -40,11 +44,11 @@ Mesh read_triangle_mesh(const std::string& path)
     throw Cli_error("cannot read '" + path + "': unknown mesh format '" + ext +
                     "' (use .off, .ply, .obj or .stl)");
 
-  std::vector<Point_3> points;
+  Input_mesh result;
   std::vector<std::vector<std::size_t>> polygons;
   bool ok = false;
   try {
-    ok = CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false));
+    ok = CGAL::IO::read_polygon_soup(path, result.points, polygons, CGAL::parameters::verbose(false));
   } catch(const std::exception&) {
     ok = false;
   }
@@ -53,37 +57,112 @@ Mesh read_triangle_mesh(const std::string& path)
                     " mesh file (or a coordinate that is not a number)");
   if(polygons.empty())
     throw Cli_error("'" + path + "' has no faces");
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(!std::isfinite(points[i].x()) || !std::isfinite(points[i].y()) || !std::isfinite(points[i].z()))
-      throw Cli_error("'" + path + "': vertex " + std::to_string(i) +
-                      " has a coordinate that is not a finite number");
+  const std::vector<Point_3>& points = result.points;
   for(std::size_t i = 0; i < polygons.size(); ++i) {
     const auto& p = polygons[i];
     if(p.size() != 3)
       throw Cli_error("'" + path + "': face " + std::to_string(i) + " has " +
                       std::to_string(p.size()) +
                       " vertices; only triangle meshes are accepted (triangulate it first)");
-    for(std::size_t v : p)
+    for(std::size_t v : p) {
       if(v >= points.size())
         throw Cli_error("'" + path + "': face " + std::to_string(i) + " refers to vertex " +
                         std::to_string(v) + ", which does not exist");
-    if(p[0] == p[1] || p[1] == p[2] || p[0] == p[2])
-      throw Cli_error("'" + path + "': face " + std::to_string(i) +
-                      " repeats a vertex (remove degenerate faces first)");
+      if(!std::isfinite(points[v].x()) || !std::isfinite(points[v].y()) || !std::isfinite(points[v].z()))
+        throw Cli_error("'" + path + "': vertex " + std::to_string(v) +
+                        " has a coordinate that is not a finite number");
+    }
   }
-  // Non-manifold or inconsistently oriented input: orient the soup (this may duplicate vertices
-  // and flip faces, but keeps the faces and their order).
-  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
-    PMP::orient_polygon_soup(points, polygons);
-    if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-      throw Cli_error("'" + path + "': the faces cannot be assembled into a surface "
-                      "(duplicated faces?)");
+
+  // One point per position: files that repeat points along seams, or give each face its own
+  // corners, become connected surfaces. Face order is kept.
+  result.merged_points = PMP::merge_duplicate_points_in_polygon_soup(result.points, polygons);
+
+  // Faces that cannot be part of a surface: a repeated corner, or the same corners as an earlier
+  // face. They are left out of the mesh (and labelled like a neighbour).
+  const std::size_t n = polygons.size();
+  result.mesh_face.assign(n, Input_mesh::left_out);
+  std::vector<std::vector<std::size_t>> kept;
+  std::vector<std::size_t> kept_input;
+  kept.reserve(n);
+  {
+    std::vector<std::array<std::size_t, 4>> corners(n); // sorted corners + input index
+    for(std::size_t i = 0; i < n; ++i) {
+      corners[i] = {polygons[i][0], polygons[i][1], polygons[i][2], i};
+      std::sort(corners[i].begin(), corners[i].begin() + 3);
+    }
+    std::sort(corners.begin(), corners.end());
+    std::vector<char> repeated(n, 0);
+    for(std::size_t k = 1; k < n; ++k)
+      if(std::equal(corners[k].begin(), corners[k].begin() + 3, corners[k - 1].begin()))
+        repeated[corners[k][3]] = 1; // a later copy of the same face
+    for(std::size_t i = 0; i < n; ++i) {
+      const auto& p = polygons[i];
+      if(p[0] == p[1] || p[1] == p[2] || p[0] == p[2] || repeated[i])
+        continue;
+      result.mesh_face[i] = kept.size();
+      kept.push_back(p);
+      kept_input.push_back(i);
+    }
   }
-  Mesh mesh;
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  if(num_faces(mesh) != polygons.size())
+  result.left_out_faces = n - kept.size();
+  if(kept.empty())
+    throw Cli_error("'" + path + "': every face is degenerate (repeats a vertex)");
+
+  // Non-manifold or inconsistently oriented input: orient the soup (this may duplicate points and
+  // flip faces, but keeps the faces and their order).
+  if(!PMP::is_polygon_soup_a_polygon_mesh(kept)) {
+    PMP::orient_polygon_soup(result.points, kept);
+    if(!PMP::is_polygon_soup_a_polygon_mesh(kept))
+      throw Cli_error("'" + path + "': the faces cannot be assembled into a surface");
+  }
+  PMP::polygon_soup_to_polygon_mesh(result.points, kept, result.mesh);
+  if(num_faces(result.mesh) != kept.size())
     throw Cli_error("'" + path + "': some faces could not be added to the surface");
-  return mesh;
+
+  result.triangles.resize(n);
+  for(std::size_t i = 0; i < n; ++i)
+    result.triangles[i] = {polygons[i][0], polygons[i][1], polygons[i][2]};
+  for(std::size_t k = 0; k < kept.size(); ++k) // as oriented
+    result.triangles[kept_input[k]] = {kept[k][0], kept[k][1], kept[k][2]};
+  return result;
+}
+
+std::vector<std::size_t> Input_mesh::input_labels(const std::vector<std::size_t>& mesh_labels) const
+{
+  const std::size_t n = triangles.size();
+  std::vector<std::size_t> labels(n, 0);
+  if(left_out_faces == 0) {
+    for(std::size_t i = 0; i < n; ++i)
+      labels[i] = mesh_labels[mesh_face[i]];
+    return labels;
+  }
+  // Faces of the mesh around each point (by input point index).
+  std::vector<std::vector<std::size_t>> around(points.size());
+  for(std::size_t i = 0; i < n; ++i)
+    if(mesh_face[i] != left_out)
+      for(std::size_t v : triangles[i])
+        around[v].push_back(i);
+  for(std::size_t i = 0; i < n; ++i) {
+    if(mesh_face[i] != left_out) {
+      labels[i] = mesh_labels[mesh_face[i]];
+      continue;
+    }
+    std::size_t best = left_out, best_shared = 0;
+    for(std::size_t v : triangles[i])
+      for(std::size_t j : around[v]) {
+        std::size_t shared = 0;
+        for(std::size_t a : triangles[i])
+          for(std::size_t b : triangles[j])
+            shared += (a == b) ? 1 : 0;
+        if(shared > best_shared || (shared == best_shared && j < best)) {
+          best_shared = shared;
+          best = j;
+        }
+      }
+    labels[i] = best == left_out ? 0 : mesh_labels[mesh_face[best]];
+  }
+  return labels;
 }
 
 std::vector<long long> read_labels(const std::string& path)
@@ -96,63 +175,111 @@ std::vector<long long> read_labels(const std::string& path)
   std::size_t line_number = 0;
   while(std::getline(in, line)) {
     ++line_number;
+    if(line.find_first_not_of(" \t\r") == std::string::npos)
+      continue;
     std::istringstream fields(line);
     long long v;
-    if(!(fields >> v)) {
-      if(line.find_first_not_of(" \t\r") == std::string::npos)
-        continue;
+    std::string rest;
+    if(!(fields >> v) || (fields >> rest))
       throw Cli_error("'" + path + "': line " + std::to_string(line_number) +
-                      " is not an integer label");
-    }
+                      " is not one integer label");
     labels.push_back(v);
   }
   return labels;
 }
+
+namespace {
+
+// The path an output really goes to: symbolic links followed, made absolute.
+std::string resolved(const std::string& path)
+{
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  return ec ? fs::absolute(path).lexically_normal().string() : p.string();
+}
+
+} // namespace
 
 Output_files::~Output_files()
 {
   if(!m_committed)
     for(const auto& s : m_staged) {
       std::error_code ec;
-      fs::remove(s.first, ec);
+      fs::remove(s.temporary, ec);
     }
 }
 
-void Output_files::check_writable(const std::string& path, const std::string& what)
+void Output_files::add_input(const std::string& path)
 {
-  const fs::path p(path);
-  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  m_inputs.emplace_back(resolved(path), path);
+}
+
+void Output_files::add_output(const std::string& path, const std::string& what)
+{
+  const std::string target = resolved(path);
+  for(const auto& in : m_inputs)
+    if(in.first == target)
+      throw Usage_error("the " + what + " '" + path + "' would overwrite the input '" + in.second + "'");
+  for(const auto& out : m_outputs)
+    if(out.first == target)
+      throw Usage_error("'" + path + "' is given for two outputs");
+  const fs::path dir = fs::path(target).parent_path();
   std::error_code ec;
   if(!fs::is_directory(dir, ec))
-    throw Cli_error("cannot write " + what + " '" + path + "': directory '" + dir.string() +
+    throw Cli_error("cannot write the " + what + " '" + path + "': directory '" + dir.string() +
                     "' does not exist");
-  if(fs::is_directory(p, ec))
-    throw Cli_error("cannot write " + what + " '" + path + "': it is a directory");
+  if(fs::is_directory(target, ec))
+    throw Cli_error("cannot write the " + what + " '" + path + "': it is a directory");
+  const bool exists = fs::exists(target, ec);
+  const bool special = exists && !fs::is_regular_file(target, ec);
+  if(special ? ::access(target.c_str(), W_OK) != 0 : ::access(dir.c_str(), W_OK) != 0)
+    throw Cli_error("cannot write the " + what + " '" + path + "': " + std::strerror(errno));
+  m_outputs.emplace_back(target, path);
 }
 
 void Output_files::stage(const std::string& path, bool binary,
                          const std::function<void(std::ostream&)>& writer)
 {
-  const std::string temporary = path + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
-    if(!out)
-      throw Cli_error("cannot write '" + path + "'");
-    m_staged.emplace_back(temporary, path);
-    writer(out);
-    out.flush();
-    if(!out)
-      throw Cli_error("error while writing '" + path + "' (disk full?)");
-  }
+  std::string target = resolved(path);
+  std::error_code ec;
+  const bool special = fs::exists(target, ec) && !fs::is_regular_file(target, ec);
+  // The temporary file: beside the target (same file system, so that rename() is atomic), or in
+  // the temporary directory for a special file.
+  std::string pattern = special ? (fs::temp_directory_path(ec) / "shape_analysis.XXXXXX").string()
+                                : target + ".tmpXXXXXX";
+  std::vector<char> name(pattern.begin(), pattern.end());
+  name.push_back('\0');
+  const int fd = ::mkstemp(name.data());
+  if(fd < 0)
+    throw Cli_error("cannot write '" + path + "': " + std::strerror(errno));
+  ::close(fd);
+  const std::string temporary(name.data());
+  m_staged.push_back(Staged{temporary, target, path, special});
+  std::ofstream out(temporary, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
+  if(!out)
+    throw Cli_error("cannot write '" + path + "'");
+  writer(out);
+  out.flush();
+  if(!out)
+    throw Cli_error("error while writing '" + path + "' (disk full?)");
 }
 
 void Output_files::commit()
 {
   for(const auto& s : m_staged) {
+    if(s.special) {
+      std::ifstream in(s.temporary, std::ios::binary);
+      std::ofstream out(s.target, std::ios::binary);
+      if(!out || !(out << in.rdbuf()) || !out.flush())
+        throw Cli_error("cannot write '" + s.shown + "'");
+      std::error_code ec;
+      fs::remove(s.temporary, ec);
+      continue;
+    }
     std::error_code ec;
-    fs::rename(s.first, s.second, ec);
+    fs::rename(s.temporary, s.target, ec);
     if(ec)
-      throw Cli_error("cannot write '" + s.second + "': " + ec.message());
+      throw Cli_error("cannot write '" + s.shown + "': " + ec.message());
   }
   m_committed = true;
 }
@@ -187,35 +314,31 @@ void put_binary(std::ostream& out, T value)
 }
 } // namespace
 
-void write_labelled_ply(std::ostream& out, const Mesh& mesh, const std::vector<std::size_t>& labels)
+void write_labelled_ply(std::ostream& out, const std::vector<Point_3>& points,
+                        const std::vector<std::array<std::size_t, 3>>& triangles,
+                        const std::vector<std::size_t>& labels)
 {
   out << "ply\nformat binary_little_endian 1.0\n"
       << "comment written by shape_analysis (CGAL Global Shape Analysis)\n"
-      << "element vertex " << num_vertices(mesh) << "\n"
-      << "property float x\nproperty float y\nproperty float z\n"
-      << "element face " << num_faces(mesh) << "\n"
+      << "element vertex " << points.size() << "\n"
+      << "property double x\nproperty double y\nproperty double z\n"
+      << "element face " << triangles.size() << "\n"
       << "property list uchar int vertex_indices\n"
       << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
       << "property int segment\n"
       << "end_header\n";
-  std::vector<int> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices(), -1);
-  int next = 0;
-  for(auto v : vertices(mesh)) {
-    index[v] = next++;
-    const Point_3& p = mesh.point(v);
-    put_binary(out, static_cast<float>(p.x()));
-    put_binary(out, static_cast<float>(p.y()));
-    put_binary(out, static_cast<float>(p.z()));
+  for(const Point_3& p : points) {
+    put_binary(out, CGAL::to_double(p.x()));
+    put_binary(out, CGAL::to_double(p.y()));
+    put_binary(out, CGAL::to_double(p.z()));
   }
-  std::size_t i = 0;
-  for(auto f : faces(mesh)) {
+  for(std::size_t i = 0; i < triangles.size(); ++i) {
     put_binary(out, static_cast<unsigned char>(3));
-    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-      put_binary(out, static_cast<std::int32_t>(index[v]));
+    for(std::size_t v : triangles[i])
+      put_binary(out, static_cast<std::int32_t>(v));
     const auto c = label_colour(labels[i]);
     out.write(reinterpret_cast<const char*>(c.data()), 3);
     put_binary(out, static_cast<std::int32_t>(labels[i]));
-    ++i;
   }
 }
 

@@ -27,21 +27,51 @@ typedef Kernel::Point_3 Point_3;
 typedef CGAL::Surface_mesh<Point_3> Mesh;
 using CGAL::Shape_analysis::internal::Json;
 
-// An error the tool reports in one line and exits non-zero for.
+// An error the tool reports in one line and exits non-zero for (1: the job failed).
 struct Cli_error : std::runtime_error
 {
   explicit Cli_error(const std::string& what) : std::runtime_error(what) {}
 };
 
-// Reads a triangle mesh (OFF, PLY, OBJ, STL). Face i of the result is face i of the file.
+// A command line that cannot work as given (exit code 2), found after parsing.
+struct Usage_error : Cli_error
+{
+  explicit Usage_error(const std::string& what) : Cli_error(what) {}
+};
+
+// A triangle mesh read from a file, with what is needed to answer per input face.
+struct Input_mesh
+{
+  Mesh mesh;                                    // the faces that form a surface
+  std::vector<Point_3> points;                  // the file's points, exact duplicates merged
+  std::vector<std::array<std::size_t, 3>> triangles; // every input face, in the file's order
+  std::vector<std::size_t> mesh_face;           // per input face: its face in `mesh`, or `left_out`
+  std::size_t merged_points = 0;                // duplicate points merged
+  std::size_t left_out_faces = 0;               // degenerate or repeated faces left out of `mesh`
+
+  static constexpr std::size_t left_out = static_cast<std::size_t>(-1);
+
+  std::size_t number_of_input_faces() const { return triangles.size(); }
+
+  // Labels per input face from labels per face of `mesh` (in the order of faces(mesh)): a face
+  // left out takes the label of the face of `mesh` sharing most of its vertices (label 0 when
+  // none does).
+  std::vector<std::size_t> input_labels(const std::vector<std::size_t>& mesh_labels) const;
+};
+
+// Reads a triangle mesh (OFF, PLY, OBJ, STL). Exact duplicate points are merged; a face that
+// repeats a vertex, or repeats another face, is left out of the surface (and labelled like its
+// neighbour by `input_labels`); a non-manifold or badly oriented soup is repaired by orienting it.
 // Throws Cli_error with the reason when the file cannot be used.
-Mesh read_triangle_mesh(const std::string& path);
+Input_mesh read_triangle_mesh(const std::string& path);
 
 // Reads one integer label per line (the Princeton Segmentation Benchmark's .seg format).
 std::vector<long long> read_labels(const std::string& path);
 
-// Output files written all-or-nothing: each is first written to a temporary file beside its
-// target; commit() renames them all; without commit() (an error happened) they are removed.
+// Output files written all-or-nothing. Each is first written to a temporary file beside its
+// (link-resolved) target; commit() renames them all; without commit() (an error happened) they
+// are removed. An existing target that is not a regular file (/dev/null, a pipe) is written to
+// directly at commit time.
 class Output_files
 {
 public:
@@ -50,24 +80,36 @@ public:
   Output_files& operator=(const Output_files&) = delete;
   ~Output_files();
 
-  // Checks early that `path` can be written (its directory exists); throws Cli_error otherwise.
-  static void check_writable(const std::string& path, const std::string& what);
+  // Declares an input file: no output may be written over it.
+  void add_input(const std::string& path);
+  // Declares an output before any work: checks that its directory exists and is writable and
+  // that it is neither an input nor another output. Throws Cli_error / Usage_error otherwise.
+  void add_output(const std::string& path, const std::string& what);
 
-  // Writes the content produced by `writer` into a temporary file for `path`.
+  // Writes the content produced by `writer` into a temporary file for the declared `path`.
   void stage(const std::string& path, bool binary, const std::function<void(std::ostream&)>& writer);
   void commit();
 
 private:
-  std::vector<std::pair<std::string, std::string>> m_staged; // (temporary, final)
+  struct Staged
+  {
+    std::string temporary, target, shown;
+    bool special;
+  };
+  std::vector<std::pair<std::string, std::string>> m_inputs;  // (resolved, as given)
+  std::vector<std::pair<std::string, std::string>> m_outputs; // (resolved, as given)
+  std::vector<Staged> m_staged;
   bool m_committed = false;
 };
 
 // Distinct colours for labels 0, 1, 2, ... (golden-angle hues).
 std::array<unsigned char, 3> label_colour(std::size_t label);
 
-// Binary PLY of the mesh with per-face colours from `labels` and an integer face property
-// `segment`. Vertices and faces in the mesh's order.
-void write_labelled_ply(std::ostream& out, const Mesh& mesh, const std::vector<std::size_t>& labels);
+// Binary PLY of a triangle soup with per-face colours from `labels` and an integer face
+// property `segment`; coordinates in double precision; faces in the given order.
+void write_labelled_ply(std::ostream& out, const std::vector<Point_3>& points,
+                        const std::vector<std::array<std::size_t, 3>>& triangles,
+                        const std::vector<std::size_t>& labels);
 
 // One label per line.
 void write_labels(std::ostream& out, const std::vector<std::size_t>& labels);

@@ -35,29 +35,41 @@ int run_segment(const Segment_options& o)
   Progress progress("segment", o.quiet, o.verbose);
 
   // Check every output location before any work, so that a bad path costs nothing.
+  Output_files outputs;
+  outputs.add_input(o.input);
+  if(!o.prior.empty())
+    outputs.add_input(o.prior);
   if(!o.output_ply.empty())
-    Output_files::check_writable(o.output_ply, "the coloured mesh");
+    outputs.add_output(o.output_ply, "coloured mesh");
   if(!o.output_seg.empty())
-    Output_files::check_writable(o.output_seg, "the labels");
+    outputs.add_output(o.output_seg, "labels");
   if(!o.report.empty())
-    Output_files::check_writable(o.report, "the report");
+    outputs.add_output(o.report, "report");
 
   progress.stage("reading " + o.input);
   Stopwatch reading;
-  Mesh mesh = read_triangle_mesh(o.input);
+  Input_mesh input = read_triangle_mesh(o.input);
+  Mesh& mesh = input.mesh;
   const double read_seconds = reading.seconds();
-  const std::size_t n = num_faces(mesh);
+  const std::size_t n = input.number_of_input_faces();
+  if(input.merged_points > 0 || input.left_out_faces > 0)
+    progress.stage("merged " + std::to_string(input.merged_points) + " duplicate points; left " +
+                   std::to_string(input.left_out_faces) + " degenerate or repeated faces out");
 
   std::vector<long long> prior;
   if(!o.prior.empty()) {
-    prior = read_labels(o.prior);
-    if(prior.size() != n)
-      throw Cli_error("'" + o.prior + "' has " + std::to_string(prior.size()) +
+    const std::vector<long long> prior_per_input = read_labels(o.prior);
+    if(prior_per_input.size() != n)
+      throw Cli_error("'" + o.prior + "' has " + std::to_string(prior_per_input.size()) +
                       " labels but '" + o.input + "' has " + std::to_string(n) + " faces");
+    prior.assign(num_faces(mesh), 0);
+    for(std::size_t i = 0; i < n; ++i)
+      if(input.mesh_face[i] != Input_mesh::left_out)
+        prior[input.mesh_face[i]] = prior_per_input[i];
   }
 
-  progress.stage("segmenting " + std::to_string(n) + " faces into " + std::to_string(o.segments) +
-                 " segments");
+  progress.stage("segmenting " + std::to_string(num_faces(mesh)) + " faces into " +
+                 std::to_string(o.segments) + " segments");
   auto segment_map = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:segment", 0).first;
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
   const auto np = CS::parameters::number_of_segments(o.segments)
@@ -78,29 +90,27 @@ int run_segment(const Segment_options& o)
   const double segment_seconds = segmenting.seconds();
   progress.done();
 
-  std::vector<std::size_t> labels;
-  labels.reserve(n);
+  std::vector<std::size_t> mesh_labels;
+  mesh_labels.reserve(num_faces(mesh));
   for(auto f : faces(mesh))
-    labels.push_back(segment_map[f]);
+    mesh_labels.push_back(segment_map[f]);
+  const std::vector<std::size_t> labels = input.input_labels(mesh_labels);
   std::vector<double> areas(k, 0.0);
   std::vector<std::size_t> counts(k, 0);
-  {
-    std::size_t i = 0;
-    for(auto f : faces(mesh)) {
-      const auto h = mesh.halfedge(f);
-      const Point_3& a = mesh.point(mesh.source(h));
-      const Point_3& b = mesh.point(mesh.target(h));
-      const Point_3& c = mesh.point(mesh.target(mesh.next(h)));
-      areas[labels[i]] += std::sqrt(CGAL::to_double(CGAL::squared_area(a, b, c)));
-      ++counts[labels[i]];
-      ++i;
-    }
+  for(std::size_t i = 0; i < n; ++i) {
+    const auto& t = input.triangles[i];
+    const Point_3& a = input.points[t[0]];
+    const Point_3& b = input.points[t[1]];
+    const Point_3& c = input.points[t[2]];
+    areas[labels[i]] += std::sqrt(CGAL::to_double(CGAL::squared_area(a, b, c)));
+    ++counts[labels[i]];
   }
 
-  Output_files outputs;
   if(!o.output_ply.empty()) {
     progress.stage("writing " + o.output_ply);
-    outputs.stage(o.output_ply, true, [&](std::ostream& out) { write_labelled_ply(out, mesh, labels); });
+    outputs.stage(o.output_ply, true, [&](std::ostream& out) {
+      write_labelled_ply(out, input.points, input.triangles, labels);
+    });
   }
   if(!o.output_seg.empty()) {
     progress.stage("writing " + o.output_seg);
@@ -111,7 +121,9 @@ int run_segment(const Segment_options& o)
     report["command"] = "segment";
     report["input"] = o.input;
     report["faces"] = n;
-    report["vertices"] = static_cast<std::size_t>(num_vertices(mesh));
+    report["vertices"] = input.points.size();
+    report["merged_duplicate_points"] = input.merged_points;
+    report["left_out_faces"] = input.left_out_faces;
     report["segments"] = k;
     Json parameters = Json::object();
     parameters["segments"] = o.segments;

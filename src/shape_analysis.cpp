@@ -55,6 +55,9 @@ int main(int argc, char** argv)
     return run ? run() : 2;
   } catch(const CGAL::Shape_analysis::Bad_input& e) {
     std::cerr << "shape_analysis " << command << ": error: " << one_line(e.what()) << std::endl;
+  } catch(const Usage_error& e) {
+    std::cerr << "shape_analysis " << command << ": error: " << one_line(e.what()) << std::endl;
+    return 2;
   } catch(const Cli_error& e) {
     std::cerr << "shape_analysis " << command << ": error: " << one_line(e.what()) << std::endl;
   } catch(const std::bad_alloc&) {

@@ -17,7 +17,12 @@ namespace CS = CGAL::Consistent_segmentation;
 
 int main(int argc, char** argv)
 {
-  const std::string filename = argc > 1 ? argv[1] : CGAL::data_file_path("meshes/elephant.off");
+#ifdef SHAPE_ANALYSIS_DATA_DIR // built in this project: CGAL's meshes extracted at configure time
+  const std::string default_file = std::string(SHAPE_ANALYSIS_DATA_DIR) + "/elephant.off";
+#else
+  const std::string default_file = CGAL::data_file_path("meshes/elephant.off");
+#endif
+  const std::string filename = argc > 1 ? argv[1] : default_file;
   const std::size_t k = argc > 2 ? std::strtoul(argv[2], nullptr, 10) : 6;
 
   Mesh mesh;

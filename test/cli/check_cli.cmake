@@ -19,6 +19,7 @@ file(WRITE "${WORK}/tetra.off" "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\
 file(WRITE "${WORK}/quad.off" "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n")
 file(WRITE "${WORK}/short.seg" "0\n1\n")
 file(WRITE "${WORK}/tetra.seg" "0\n0\n1\n1\n")
+file(WRITE "${WORK}/bad.seg" "0\n1.5\n1\n1\n")
 
 set(resolved_args "")
 foreach(a ${args})
