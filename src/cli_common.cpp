@@ -12,6 +12,7 @@
 #include <cctype>
 #include <cmath>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
@@ -190,6 +191,41 @@ std::vector<long long> read_labels(const std::string& path)
 
 namespace {
 
+// Temporary files to remove if the run is interrupted (SIGINT, SIGTERM, SIGHUP): plain buffers,
+// so that the signal handler only reads memory and calls unlink().
+constexpr std::size_t max_temporaries = 16;
+char temporary_names[max_temporaries][4096];
+volatile std::sig_atomic_t temporary_count = 0;
+
+extern "C" void remove_temporaries_and_exit(int signal_number)
+{
+  for(std::sig_atomic_t i = 0; i < temporary_count; ++i)
+    if(temporary_names[i][0] != '\0')
+      ::unlink(temporary_names[i]);
+  ::_exit(128 + signal_number);
+}
+
+void track_temporary(const std::string& name)
+{
+  static bool installed = false;
+  if(!installed) {
+    std::signal(SIGINT, remove_temporaries_and_exit);
+    std::signal(SIGTERM, remove_temporaries_and_exit);
+    std::signal(SIGHUP, remove_temporaries_and_exit);
+    installed = true;
+  }
+  if(temporary_count < std::sig_atomic_t(max_temporaries) && name.size() < sizeof(temporary_names[0])) {
+    std::memcpy(temporary_names[temporary_count], name.c_str(), name.size() + 1);
+    temporary_count = temporary_count + 1;
+  }
+}
+
+void untrack_temporaries()
+{
+  for(std::sig_atomic_t i = 0; i < temporary_count; ++i)
+    temporary_names[i][0] = '\0';
+}
+
 // The path an output really goes to: symbolic links followed, made absolute.
 std::string resolved(const std::string& path)
 {
@@ -207,6 +243,7 @@ Output_files::~Output_files()
       std::error_code ec;
       fs::remove(s.temporary, ec);
     }
+  untrack_temporaries();
 }
 
 void Output_files::add_input(const std::string& path)
@@ -254,6 +291,7 @@ void Output_files::stage(const std::string& path, bool binary,
     throw Cli_error("cannot write '" + path + "': " + std::strerror(errno));
   ::close(fd);
   const std::string temporary(name.data());
+  track_temporary(temporary);
   m_staged.push_back(Staged{temporary, target, path, special});
   std::ofstream out(temporary, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
   if(!out)
