@@ -18,6 +18,7 @@
 
 #include <CGAL/Shape_analysis/internal/Dual_graph.h>
 #include <CGAL/Shape_analysis/internal/Point_tree.h>
+#include <CGAL/Shape_analysis/internal/Union_find.h>
 
 #include <algorithm>
 #include <cmath>
@@ -46,31 +47,10 @@ struct Component_link_options
 // Connected components of the graph (over all its edges); returns their number.
 inline std::size_t graph_components(const Dual_graph& g, std::vector<std::uint32_t>& component)
 {
-  const std::size_t n = g.number_of_nodes();
-  std::vector<std::uint32_t> parent(n);
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto find = [&](std::uint32_t x) {
-    while(parent[x] != x) {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  };
-  for(std::size_t e = 0; e < g.number_of_edges(); ++e) {
-    const std::uint32_t a = find(g.edge_source[e]), b = find(g.edge_target[e]);
-    if(a != b)
-      parent[(std::max)(a, b)] = (std::min)(a, b);
-  }
-  component.assign(n, 0);
-  std::vector<std::uint32_t> dense(n, (std::numeric_limits<std::uint32_t>::max)());
-  std::uint32_t count = 0;
-  for(std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t r = find(static_cast<std::uint32_t>(i));
-    if(dense[r] == (std::numeric_limits<std::uint32_t>::max)())
-      dense[r] = count++;
-    component[i] = dense[r];
-  }
-  return count;
+  Union_find sets(g.number_of_nodes());
+  for(std::size_t e = 0; e < g.number_of_edges(); ++e)
+    sets.unite(g.edge_source[e], g.edge_target[e]);
+  return sets.dense_labels(component);
 }
 
 class Component_linker
@@ -283,25 +263,17 @@ private:
         pairs.emplace_back(nb.first, (std::min)(std::uint32_t(a), nb.second),
                            (std::max)(std::uint32_t(a), nb.second));
     std::sort(pairs.begin(), pairs.end());
-    std::vector<std::uint32_t> parent(count);
-    std::iota(parent.begin(), parent.end(), 0u);
-    auto find = [&](std::uint32_t x) {
-      while(parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-      }
-      return x;
-    };
+    Union_find sets(count);
     auto join = [&](std::uint32_t a, std::uint32_t b) {
       std::uint32_t fa = 0, fb = 0;
       double d2 = 0;
       nearest_pair(comps[a], comps[b], fa, fb, d2);
       add_link(fa, fb, std::sqrt(d2));
-      parent[(std::max)(find(a), find(b))] = (std::min)(find(a), find(b));
+      sets.unite(a, b);
     };
     std::size_t groups = count;
     for(const auto& p : pairs)
-      if(find(std::get<1>(p)) != find(std::get<2>(p))) {
+      if(sets.find(std::get<1>(p)) != sets.find(std::get<2>(p))) {
         join(std::get<1>(p), std::get<2>(p));
         --groups;
       }
@@ -318,7 +290,7 @@ private:
     const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     std::vector<std::uint32_t> representatives;
     for(std::uint32_t c = 0; c < count; ++c)
-      if(find(c) == c)
+      if(sets.find(c) == c)
         representatives.push_back(c);
     std::sort(representatives.begin(), representatives.end(), [&](std::uint32_t a, std::uint32_t b) {
       const double ca = comps[a].centre()[axis], cb = comps[b].centre()[axis];

@@ -13,6 +13,7 @@
 // iteration order of `edges(tm)`), or `no_mesh_edge` for an edge added later (component links).
 
 #include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/internal/Union_find.h>
 #include <CGAL/Shape_analysis/internal/Vector_3d.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -176,24 +177,14 @@ void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap f
   g.bbox_diagonal = n > 0 ? (hi - lo).length() : 0.0;
 
   // Connected components through interior edges, then one orientation per component.
-  std::vector<std::uint32_t> parent(n);
-  for(std::size_t i = 0; i < n; ++i)
-    parent[i] = static_cast<std::uint32_t>(i);
-  auto find = [&](std::uint32_t x) {
-    while(parent[x] != x) {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  };
+  Union_find sets(n);
+  auto find = [&](std::uint32_t x) { return sets.find(x); };
   for(auto e : edges(tm)) {
     const halfedge_descriptor h = halfedge(e, tm), ho = opposite(h, tm);
     if(is_border(h, tm) || is_border(ho, tm))
       continue;
-    const std::uint32_t a = find(static_cast<std::uint32_t>(get(fim, face(h, tm))));
-    const std::uint32_t b = find(static_cast<std::uint32_t>(get(fim, face(ho, tm))));
-    if(a != b)
-      parent[(std::max)(a, b)] = (std::min)(a, b);
+    sets.unite(static_cast<std::uint32_t>(get(fim, face(h, tm))),
+               static_cast<std::uint32_t>(get(fim, face(ho, tm))));
   }
   std::vector<double> border_length(n, 0.0), edge_length_sum(n, 0.0);
   for(auto e : edges(tm)) {

@@ -20,6 +20,8 @@
 // the pair picked is drawn with probability proportional to |dJ|^(1/r) (Gumbel perturbation of
 // log|dJ|), from a generator seeded by the caller.
 
+#include <CGAL/Shape_analysis/internal/Union_find.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -64,9 +66,7 @@ public:
       m_size[i] = sizes[i] > tiny ? sizes[i] : tiny;
     m_cut.assign(n, 0.0);
     m_version.assign(n, 0);
-    m_parent.resize(n);
-    for(std::size_t i = 0; i < n; ++i)
-      m_parent[i] = static_cast<Id>(i);
+    m_sets.reset(n);
     m_alive.assign(n, 1);
     m_number_of_clusters = n;
     m_adjacency.assign(n, {});
@@ -143,33 +143,14 @@ public:
   }
 
   // Cluster id (the id of a surviving node) of node i.
-  Id find(Id i)
-  {
-    Id root = i;
-    while(m_parent[root] != root)
-      root = m_parent[root];
-    while(m_parent[i] != root) {
-      const Id next = m_parent[i];
-      m_parent[i] = root;
-      i = next;
-    }
-    return root;
-  }
+  Id find(Id i) { return m_sets.find(i); }
 
   // Dense labels 0..k-1, numbered in the order of the first node of each cluster.
   std::vector<std::size_t> labels()
   {
-    const std::size_t n = m_parent.size();
-    std::vector<std::size_t> dense(n, (std::numeric_limits<std::size_t>::max)());
-    std::vector<std::size_t> result(n);
-    std::size_t next = 0;
-    for(std::size_t i = 0; i < n; ++i) {
-      const Id r = find(static_cast<Id>(i));
-      if(dense[r] == (std::numeric_limits<std::size_t>::max)())
-        dense[r] = next++;
-      result[i] = dense[r];
-    }
-    return result;
+    std::vector<std::uint32_t> dense;
+    m_sets.dense_labels(dense);
+    return std::vector<std::size_t>(dense.begin(), dense.end());
   }
 
   double delta(Id a, Id b, double w_ab) const
@@ -292,7 +273,7 @@ private:
     m_cut[s] = (std::max)(0.0, m_cut[s] + m_cut[t] - 2 * w_st);
     m_size[s] += m_size[t];
     m_alive[t] = 0;
-    m_parent[t] = s;
+    m_sets.absorb(s, t);
     ++m_version[s];
     ++m_version[t];
     --m_number_of_clusters;
@@ -302,7 +283,7 @@ private:
 
   std::vector<double> m_size, m_cut;
   std::vector<std::uint32_t> m_version;
-  std::vector<Id> m_parent;
+  Union_find m_sets; // node -> cluster
   std::vector<char> m_alive;
   std::vector<std::vector<std::pair<Id, double>>> m_adjacency;
   std::vector<Merge> m_merges;

@@ -12,6 +12,7 @@
 // lets a large misplaced region change sides, the finer levels then straighten the boundaries.
 
 #include <CGAL/Shape_analysis/internal/Normalized_cut_clustering.h>
+#include <CGAL/Shape_analysis/internal/Union_find.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -172,30 +173,17 @@ inline void multilevel_refinement(const std::vector<double>& node_size,
   for(double m = double(k) * growth; m < double(n); m *= growth)
     levels.push_back(static_cast<std::size_t>(m));
   levels.push_back(n);
-  std::vector<std::uint32_t> parent(n), unit_of(n);
+  std::vector<std::uint32_t> unit_of(n);
+  Union_find sets;
   for(std::size_t m : levels) {
     if(m > n || n - m > merges.size())
       continue;
-    std::iota(parent.begin(), parent.end(), 0u);
-    auto find = [&](std::uint32_t x) {
-      while(parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-      }
-      return x;
-    };
+    sets.reset(n);
     for(std::size_t j = 0; j < n - m; ++j)
-      parent[find(merges[j].absorbed)] = find(merges[j].survivor);
+      sets.absorb(merges[j].survivor, merges[j].absorbed);
     // Dense unit ids; the segment of a unit is the label of its nodes (units are nested in
     // segments at the first level, and move as a whole afterwards).
-    std::vector<std::uint32_t> dense(n, (std::numeric_limits<std::uint32_t>::max)());
-    std::uint32_t count = 0;
-    for(std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t r = find(static_cast<std::uint32_t>(i));
-      if(dense[r] == (std::numeric_limits<std::uint32_t>::max)())
-        dense[r] = count++;
-      unit_of[i] = dense[r];
-    }
+    sets.dense_labels(unit_of);
     // A unit may straddle segments after finer moves of an earlier level: split it by segment.
     std::vector<std::uint64_t> key(n);
     for(std::size_t i = 0; i < n; ++i)
