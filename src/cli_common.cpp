@@ -282,8 +282,9 @@ void Output_files::stage(const std::string& path, bool binary,
   const bool special = fs::exists(target, ec) && !fs::is_regular_file(target, ec);
   // The temporary file: beside the target (same file system, so that rename() is atomic), or in
   // the temporary directory for a special file.
-  std::string pattern = special ? (fs::temp_directory_path(ec) / "shape_analysis.XXXXXX").string()
-                                : target + ".tmpXXXXXX";
+  const std::string unique(6, 'X'); // replaced by mkstemp()
+  std::string pattern = special ? (fs::temp_directory_path(ec) / ("shape_analysis." + unique)).string()
+                                : target + ".tmp" + unique;
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   const int fd = ::mkstemp(name.data());
