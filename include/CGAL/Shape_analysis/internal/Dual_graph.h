@@ -176,41 +176,44 @@ void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap f
   }
   g.bbox_diagonal = n > 0 ? (hi - lo).length() : 0.0;
 
-  // Connected components through interior edges, then one orientation per component.
+  // Connected components through interior edges, then one orientation per component. Each edge's
+  // length is credited to one of its faces (and to the border when it has only one), then
+  // summed per component.
   Union_find sets(n);
-  auto find = [&](std::uint32_t x) { return sets.find(x); };
-  for(auto e : edges(tm)) {
-    const halfedge_descriptor h = halfedge(e, tm), ho = opposite(h, tm);
-    if(is_border(h, tm) || is_border(ho, tm))
-      continue;
-    sets.unite(static_cast<std::uint32_t>(get(fim, face(h, tm))),
-               static_cast<std::uint32_t>(get(fim, face(ho, tm))));
-  }
   std::vector<double> border_length(n, 0.0), edge_length_sum(n, 0.0);
   for(auto e : edges(tm)) {
     const halfedge_descriptor h = halfedge(e, tm), ho = opposite(h, tm);
     const bool border = is_border(h, tm) || is_border(ho, tm);
-    const auto f = face(is_border(h, tm) ? ho : h, tm);
-    const std::uint32_t c = find(static_cast<std::uint32_t>(get(fim, f)));
+    const std::size_t f = static_cast<std::size_t>(get(fim, face(is_border(h, tm) ? ho : h, tm)));
     const double length = (point(target(h, tm)) - point(source(h, tm))).length();
-    edge_length_sum[c] += length;
+    edge_length_sum[f] += length;
     if(border)
-      border_length[c] += length;
+      border_length[f] += length;
+    else
+      sets.unite(static_cast<std::uint32_t>(f), static_cast<std::uint32_t>(get(fim, face(ho, tm))));
+  }
+  auto find = [&](std::size_t i) { return sets.find(static_cast<std::uint32_t>(i)); };
+  for(std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t c = find(i);
+    if(c != i) {
+      edge_length_sum[c] += edge_length_sum[i];
+      border_length[c] += border_length[i];
+    }
   }
   std::vector<Vector_3d> weighted_centroid(n);
   std::vector<double> area(n, 0.0), signed_volume(n, 0.0);
   for(std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t c = find(static_cast<std::uint32_t>(i));
+    const std::uint32_t c = find(i);
     weighted_centroid[c] += g.node_position[i] * g.node_size[i];
     area[c] += g.node_size[i];
   }
   for(std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t c = find(static_cast<std::uint32_t>(i));
+    const std::uint32_t c = find(i);
     const Vector_3d centre = area[c] > 0 ? weighted_centroid[c] / area[c] : Vector_3d();
     signed_volume[c] += dot(g.node_position[i] - centre, g.node_normal[i]) * g.node_size[i];
   }
   for(std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t c = find(static_cast<std::uint32_t>(i));
+    const std::uint32_t c = find(i);
     if(signed_volume[c] < 0 && border_length[c] < 0.3 * edge_length_sum[c])
       g.node_normal[i] *= -1.0;
   }
