@@ -14,14 +14,10 @@
 // a class, then over classes. Runs sequentially so that timings are clean. JSON goes to stdout
 // (and to FILE, rewritten after every mesh so that a long run can be watched); progress to stderr.
 
-#include "psb.h"
+#include "psb_io.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/OFF.h>
-#include <CGAL/IO/polygon_soup_io.h>
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/mesh_segmentation.h>
 
 #include <CGAL/Consistent_segmentation/hierarchical_segmentation.h>
@@ -44,76 +40,20 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
-typedef Kernel::Point_3 Point;
-typedef CGAL::Surface_mesh<Point> Mesh;
+using psb::Mesh;
+using psb::lower;
+using psb::parse_ids;
+using psb::read_mesh;
+using psb::split;
+using psb::write_output;
 typedef Mesh::Face_index Face;
 typedef CGAL::Shape_analysis::internal::Json Json;
 namespace CS = CGAL::Consistent_segmentation;
-namespace PMP = CGAL::Polygon_mesh_processing;
 namespace fs = std::filesystem;
 
 double seconds_since(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// Reads an OFF file into `mesh` keeping the file's face order. A file that is not a valid
-// polygon mesh as it stands is read as a polygon soup, oriented (points duplicated where needed)
-// and converted, which also keeps the face order; `note` then says so.
-bool read_mesh(const fs::path& file, Mesh& mesh, std::string& note)
-{
-  {
-    std::ifstream in(file);
-    if(in && CGAL::IO::read_OFF(in, mesh) && !faces(mesh).empty())
-      return true;
-  }
-  mesh.clear();
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  if(!CGAL::IO::read_polygon_soup(file.string(), points, polygons) || polygons.empty())
-    return false;
-  PMP::orient_polygon_soup(points, polygons);
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  note = "read as a polygon soup and oriented";
-  return !faces(mesh).empty();
-}
-
-std::vector<std::string> split(const std::string& list)
-{
-  std::vector<std::string> items;
-  std::stringstream in(list);
-  std::string item;
-  while(std::getline(in, item, ','))
-    if(!item.empty())
-      items.push_back(item);
-  return items;
-}
-
-std::string lower(std::string s)
-{
-  for(char& c : s)
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-// "1,2,21-28" -> {1, 2, 21, ..., 28}
-bool parse_ids(const std::string& list, std::set<int>& ids)
-{
-  try {
-    for(const std::string& item : split(list)) {
-      const std::size_t dash = item.find('-', 1);
-      if(dash == std::string::npos)
-        ids.insert(std::stoi(item));
-      else
-        for(int i = std::stoi(item.substr(0, dash)), last = std::stoi(item.substr(dash + 1));
-            i <= last; ++i)
-          ids.insert(i);
-    }
-  } catch(...) {
-    return false;
-  }
-  return true;
 }
 
 struct Method_result
@@ -174,25 +114,6 @@ struct Accumulator
     return j;
   }
 };
-
-void write_output(const std::string& file, const Json& report)
-{
-  if(file.empty())
-    return;
-  const std::string tmp = file + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << report.dump() << '\n';
-    if(!out) {
-      std::cerr << "cannot write " << tmp << '\n';
-      return;
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, file, ec);
-  if(ec)
-    std::cerr << "cannot rename " << tmp << " to " << file << ": " << ec.message() << '\n';
-}
 
 void usage(const char* name)
 {
@@ -255,20 +176,9 @@ int main(int argc, char** argv)
                                   "default parameters (5 clusters, smoothing lambda 0.26)")
                            : Json("skipped (--no-sdf)");
 
-  std::vector<psb::Mesh_entry> all = psb::list_meshes(psb_dir);
-  if(all.empty()) {
-    report["skipped"] = "no PSB meshes with segmentations found in " + psb_dir.string();
-    std::cout << report.dump() << '\n';
-    write_output(output, report);
-    return EXIT_SUCCESS;
-  }
-  std::vector<psb::Mesh_entry> meshes;
-  for(auto& m : all)
-    if((classes.empty() || classes.count(lower(m.mesh_class))) && (ids.empty() || ids.count(m.id)))
-      meshes.push_back(std::move(m));
-  all.clear();
+  std::vector<psb::Mesh_entry> meshes = psb::select_meshes(psb_dir, classes, ids);
   if(meshes.empty()) {
-    report["skipped"] = "no PSB mesh matches the selection";
+    report["skipped"] = "no PSB mesh with segmentations matches the selection in " + psb_dir.string();
     std::cout << report.dump() << '\n';
     write_output(output, report);
     return EXIT_SUCCESS;

@@ -28,7 +28,18 @@ namespace internal_np {
   X(component_link_distance_t, component_link_distance_tag, component_link_distance) \
   X(component_link_factor_t, component_link_factor_tag, component_link_factor)       \
   X(boundary_refinement_t, boundary_refinement_tag, boundary_refinement)             \
-  X(progress_callback_t, progress_callback_tag, progress_callback)
+  X(progress_callback_t, progress_callback_tag, progress_callback)                   \
+  X(sampling_method_t, sampling_method_tag, sampling_method)                         \
+  X(part_size_t, part_size_tag, part_size)                                           \
+  X(part_sizes_t, part_sizes_tag, part_sizes)                                        \
+  X(number_of_clusters_t, number_of_clusters_tag, number_of_clusters)                \
+  X(randomness_t, randomness_tag, randomness)                                        \
+  X(convergence_tolerance_t, convergence_tolerance_tag, convergence_tolerance)       \
+  X(score_weighting_t, score_weighting_tag, score_weighting)                         \
+  X(number_of_threads_t, number_of_threads_tag, number_of_threads)                   \
+  X(number_of_cuts_t, number_of_cuts_tag, number_of_cuts)                            \
+  X(duplicate_tolerance_t, duplicate_tolerance_tag, duplicate_tolerance)             \
+  X(edge_value_map_t, edge_value_map_tag, edge_value_map)
 
 #define CGAL_SHAPE_ANALYSIS_DECLARE_TAG(X, Y, Z) enum X { Y };
 CGAL_SHAPE_ANALYSIS_NAMED_PARAMETER_LIST(CGAL_SHAPE_ANALYSIS_DECLARE_TAG)

@@ -10,6 +10,7 @@
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/internal/Component_links.h>
 #include <CGAL/Shape_analysis/internal/Dual_graph.h>
+#include <CGAL/Shape_analysis/internal/Labels.h>
 #include <CGAL/Shape_analysis/internal/Normalized_cut_clustering.h>
 #include <CGAL/Shape_analysis/internal/Partition_refinement.h>
 
@@ -55,32 +56,7 @@ inline void check_options(const Segmentation_options& o, std::size_t number_of_f
     throw Bad_input(who + ": component_link_factor must be a finite number > 0");
 }
 
-// Numbers the segments 0..k-1 by decreasing total size (ties: smallest node first).
-inline std::vector<std::size_t> number_by_size(const std::vector<std::size_t>& labels,
-                                               const std::vector<double>& sizes)
-{
-  std::size_t k = 0;
-  for(std::size_t l : labels)
-    k = (std::max)(k, l + 1);
-  std::vector<double> area(k, 0.0);
-  std::vector<std::size_t> first(k, labels.size());
-  for(std::size_t i = 0; i < labels.size(); ++i) {
-    area[labels[i]] += sizes[i];
-    first[labels[i]] = (std::min)(first[labels[i]], i);
-  }
-  std::vector<std::size_t> order(k);
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return area[a] != area[b] ? area[a] > area[b] : first[a] < first[b];
-  });
-  std::vector<std::size_t> rank(k);
-  for(std::size_t r = 0; r < k; ++r)
-    rank[order[r]] = r;
-  std::vector<std::size_t> result(labels.size());
-  for(std::size_t i = 0; i < labels.size(); ++i)
-    result[i] = rank[labels[i]];
-  return result;
-}
+using CGAL::Shape_analysis::internal::number_by_size;
 
 // Segments the dual graph `g` (modified: prior boundaries and links are applied to it).
 inline std::vector<std::size_t> segment_dual_graph(CGAL::Shape_analysis::internal::Dual_graph& g,

@@ -105,6 +105,40 @@ struct Dual_graph
   double total_size() const { return std::accumulate(node_size.begin(), node_size.end(), 0.0); }
 };
 
+// The subgraph induced by `nodes` (sorted, distinct node ids of `g`): node k of `sub` is
+// nodes[k]; its edges are the edges of `g` with both ends among `nodes`, in the order of `g`
+// (`parent_edge[j]` is the edge of `g` that edge j of `sub` is), keeping their mesh edges.
+inline void induced_subgraph(const Dual_graph& g, const std::vector<std::uint32_t>& nodes,
+                             Dual_graph& sub, std::vector<std::uint32_t>& parent_edge)
+{
+  const std::uint32_t none = ~std::uint32_t(0);
+  std::vector<std::uint32_t> local(g.number_of_nodes(), none);
+  for(std::size_t k = 0; k < nodes.size(); ++k)
+    local[nodes[k]] = static_cast<std::uint32_t>(k);
+  sub = Dual_graph();
+  sub.node_size.reserve(nodes.size());
+  sub.node_position.reserve(nodes.size());
+  sub.node_normal.reserve(nodes.size());
+  for(std::uint32_t v : nodes) {
+    sub.node_size.push_back(g.node_size[v]);
+    sub.node_position.push_back(g.node_position[v]);
+    sub.node_normal.push_back(g.node_normal[v]);
+  }
+  parent_edge.clear();
+  for(std::size_t e = 0; e < g.number_of_edges(); ++e) {
+    const std::uint32_t u = local[g.edge_source[e]], v = local[g.edge_target[e]];
+    if(u == none || v == none)
+      continue;
+    sub.add_edge(u, v, g.edge_length[e], g.concavity_weight[e], g.cut_cost[e], g.traversal_cost[e],
+                 g.mesh_edge[e]);
+    parent_edge.push_back(static_cast<std::uint32_t>(e));
+  }
+  sub.number_of_mesh_edges = g.number_of_mesh_edges;
+  sub.mean_mesh_edge_length = g.mean_mesh_edge_length;
+  sub.bbox_diagonal = g.bbox_diagonal;
+  sub.build_adjacency();
+}
+
 // w(theta) for the angle `phi` between the two face normals (0 = flat) and the crease type.
 inline double concavity_weight(double phi, bool concave, double alpha)
 {

@@ -10,6 +10,8 @@
 // graph or its property arrays (randomized min-cuts solve hundreds of cuts on one dual graph).
 
 #include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/internal/Dual_graph.h>
+#include <CGAL/Shape_analysis/internal/Max_flow.h>
 
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 #include <boost/graph/compressed_sparse_row_graph.hpp>
@@ -202,6 +204,67 @@ private:
   std::vector<boost::default_color_type> m_color;
   std::vector<Arc> m_predecessor;
   std::vector<std::size_t> m_distance;
+};
+
+// Minimum cut between two nodes of a Dual_graph (no terminal arcs): the cut cost of a graph
+// edge is the capacity of both of its arcs. The topology is built once and only read afterwards,
+// so that several threads can solve cuts on one graph, each with its own Workspace.
+class Dual_graph_min_cut
+{
+public:
+  struct Workspace
+  {
+    std::vector<double> capacity;
+    Bk_max_flow::Workspace flow;
+  };
+
+  explicit Dual_graph_min_cut(const Dual_graph& g) : m_g(g), m_flow(g.first_arc, g.arc_target, m_reverse)
+  {
+    const std::size_t arcs = g.arc_target.size();
+    // The two arcs of each graph edge: the first and the second one met.
+    std::vector<std::uint32_t> first(g.number_of_edges(), no_arc);
+    m_reverse.assign(arcs, no_arc);
+    for(std::size_t a = 0; a < arcs; ++a) {
+      const std::uint32_t e = g.arc_edge[a];
+      if(first[e] == no_arc)
+        first[e] = static_cast<std::uint32_t>(a);
+      else {
+        m_reverse[a] = first[e];
+        m_reverse[first[e]] = static_cast<std::uint32_t>(a);
+      }
+    }
+  }
+
+  Dual_graph_min_cut(const Dual_graph_min_cut&) = delete;
+  Dual_graph_min_cut& operator=(const Dual_graph_min_cut&) = delete;
+
+  std::size_t number_of_nodes() const { return m_g.number_of_nodes(); }
+
+  // Solves the minimum cut between `source` and `sink` with capacity `edge_capacity[e]` on both
+  // arcs of graph edge e (finite, non-negative); returns its value. The sides are read with
+  // is_source_side().
+  double solve(const std::vector<double>& edge_capacity, std::size_t source, std::size_t sink,
+               Workspace& w) const
+  {
+    const std::size_t arcs = m_g.arc_edge.size();
+    w.capacity.resize(arcs);
+    for(std::size_t a = 0; a < arcs; ++a)
+      w.capacity[a] = edge_capacity[m_g.arc_edge[a]];
+    return m_flow.solve(w.capacity, static_cast<std::uint32_t>(source),
+                        static_cast<std::uint32_t>(sink), w.flow);
+  }
+
+  // After solve() with `w`: whether node u is on the source side of the cut.
+  static bool is_source_side(const Workspace& w, std::size_t u)
+  {
+    return Bk_max_flow::is_source_side(w.flow, u);
+  }
+
+private:
+  static constexpr std::uint32_t no_arc = ~std::uint32_t(0);
+  const Dual_graph& m_g;
+  std::vector<std::uint32_t> m_reverse;
+  Bk_max_flow m_flow;
 };
 
 } // namespace internal

@@ -17,9 +17,10 @@
 // speck bounded by near-zero cut costs, such as a folded-over face, cannot survive as a segment).
 // Options: a constraints hook `can_merge(a, b)` (cluster ids) consulted before a pair is queued,
 // a notification `on_merge(survivor, absorbed)`, and a randomized choice: with randomness r > 0
-// the pair picked is drawn with probability proportional to |dJ|^(1/r) (Gumbel perturbation of
-// log|dJ|), from a generator seeded by the caller.
+// the pair picked is drawn with probability proportional to |dJ|^(1/r) among the merges that
+// lower J (Gumbel perturbation of log|dJ|), from a generator seeded by the caller.
 
+#include <CGAL/Shape_analysis/internal/Random.h>
 #include <CGAL/Shape_analysis/internal/Union_find.h>
 
 #include <algorithm>
@@ -28,7 +29,6 @@
 #include <functional>
 #include <limits>
 #include <queue>
-#include <random>
 #include <utility>
 #include <vector>
 
@@ -112,12 +112,12 @@ public:
   void run(std::size_t target,
            const std::function<bool(Id, Id)>& can_merge = {},
            const std::function<void(Id, Id)>& on_merge = {},
-           double randomness = 0, unsigned int seed = 0, double small_size = 0)
+           double randomness = 0, std::uint64_t seed = 0, double small_size = 0)
   {
     m_can_merge = can_merge;
     m_small_size = small_size;
     m_randomness = randomness;
-    m_rng.seed(seed);
+    m_rng = Random_stream(seed);
     m_queue = Queue();
     for(Id a = 0; a < m_alive.size(); ++a) {
       if(!m_alive[a])
@@ -216,10 +216,12 @@ private:
     const double d = delta(a, b, w_ab);
     double key = d;
     if(m_randomness > 0) {
-      // Gumbel-max trick on log|d| / r: key = -|d| * exp(r * G).
-      const double u = (std::max)(1e-300, m_uniform(m_rng));
+      // Gumbel-max trick: the smallest key among the queued pairs is a draw from them with
+      // probability proportional to |d|^(1/r) among the merges that lower J (d < 0); merges that
+      // do not lower J come after all of those, drawn with probability proportional to d^(-1/r).
+      const double u = (std::max)(1e-300, m_rng.uniform());
       const double gumbel = -std::log(-std::log(u));
-      key = -std::abs(d) * std::exp(m_randomness * gumbel);
+      key = d < 0 ? d * std::exp(m_randomness * gumbel) : d * std::exp(-m_randomness * gumbel);
     }
     const int level = (m_size[a] < m_small_size || m_size[b] < m_small_size) ? 0 : 1;
     m_queue.push(Entry{level, key, d, a, b, m_version[a], m_version[b]});
@@ -292,8 +294,7 @@ private:
   std::function<bool(Id, Id)> m_can_merge;
   double m_randomness = 0;
   double m_small_size = 0;
-  std::mt19937_64 m_rng;
-  std::uniform_real_distribution<double> m_uniform{0.0, 1.0};
+  Random_stream m_rng;
   Queue m_queue;
 };
 

@@ -24,6 +24,7 @@
 // measures (Rand index, best-matching overlap).
 
 #include <CGAL/Shape_analysis/internal/Partition_agreement.h>
+#include <CGAL/Shape_analysis/internal/Random.h>
 #include <CGAL/Shape_analysis/internal/Vector_3d.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -47,32 +48,8 @@ namespace CGAL {
 namespace Shape_analysis {
 namespace internal {
 
-// ---------------------------------------------------------------------------------------------
 // Random numbers identical on every platform (splitmix64).
-
-class Procedural_random
-{
-public:
-  explicit Procedural_random(std::uint64_t seed = 0) : m_state(seed) {}
-
-  std::uint64_t next()
-  {
-    std::uint64_t z = (m_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-
-  // Uniform in [0, 1).
-  double uniform() { return double(next() >> 11) * (1.0 / 9007199254740992.0); }
-  // Uniform in [lo, hi).
-  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-  // Uniform integer in [0, n), n > 0.
-  std::size_t index(std::size_t n) { return static_cast<std::size_t>(next() % std::uint64_t(n)); }
-
-private:
-  std::uint64_t m_state;
-};
+typedef Random_stream Procedural_random;
 
 // ---------------------------------------------------------------------------------------------
 // Primitives

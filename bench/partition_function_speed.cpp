@@ -1,0 +1,211 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+// Running time of the partition function (min-cut sampling), against the thesis's figure of
+// 0.6 s per sampled cut and 4 minutes per mesh (400 cuts) at about 4,000 faces.
+//
+//   bench_partition_function_speed [--samples 400] [--repeats 5] [--faces 4000]
+//                                  [--camel FILE] [--armadillo FILE] [--output FILE]
+//                                  [--other-samplers N]
+//
+// camel.off (CGAL's data) is decimated to --faces faces with CGAL's edge-collapse
+// (Surface_mesh_simplification, Lindstrom-Turk cost and placement), as the thesis decimated its
+// meshes to about 4,000 faces; armadillo.off (52,000 faces) is used at full resolution. Each
+// timing is one call of partition_function() (dual graph and links included, file reading and
+// decimation excluded), on all cores (TBB) and on one thread; min and median over the repeats.
+// With --other-samplers N > 0, the K-means and hierarchical samplers are timed too, with N samples.
+// JSON to stdout and to FILE; progress to stderr.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
+
+#include <CGAL/Randomized_cuts/partition_function.h>
+#include <CGAL/Shape_analysis/internal/Json.h>
+#include <CGAL/Shape_analysis/internal/Parallel.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+typedef Mesh::Edge_index Edge;
+typedef CGAL::Shape_analysis::internal::Json Json;
+namespace RC = CGAL::Randomized_cuts;
+namespace SMS = CGAL::Surface_mesh_simplification;
+
+double median(std::vector<double> s)
+{
+  std::sort(s.begin(), s.end());
+  const std::size_t n = s.size();
+  return n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
+}
+
+// Times `repeats` calls of partition_function with the given method, samples and threads.
+Json time_partition_function(const Mesh& mesh, RC::Sampling_method method, std::size_t samples,
+                             std::size_t threads, std::size_t repeats, const std::string& label,
+                             double* median_seconds = nullptr)
+{
+  std::vector<double> seconds;
+  std::vector<double> values(num_edges(mesh), 0.0);
+  auto value_map = CGAL::make_property_map(values); // indexed by edge index
+  double sum = 0;
+  for(std::size_t r = 0; r < repeats; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    RC::partition_function(mesh, value_map,
+                           RC::parameters::sampling_method(method)
+                             .number_of_samples(samples)
+                             .number_of_threads(threads)
+                             .random_seed(static_cast<unsigned int>(r)));
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    sum = 0;
+    for(double v : values)
+      sum += v;
+    std::cerr << "  " << label << " run " << r + 1 << "/" << repeats << ": " << seconds.back()
+              << " s\n";
+  }
+  Json j = Json::object();
+  j["samples"] = samples;
+  j["threads"] = threads == 0 ? Json("all") : Json(threads);
+  j["runs"] = repeats;
+  j["min_seconds"] = *std::min_element(seconds.begin(), seconds.end());
+  j["median_seconds"] = median(seconds);
+  j["seconds"] = seconds;
+  j["median_seconds_per_sample"] = median(seconds) / double(samples);
+  j["mean_edge_value"] = sum / double(values.size());
+  if(median_seconds != nullptr)
+    *median_seconds = median(seconds);
+  return j;
+}
+
+bool read_mesh(const std::string& file, Mesh& mesh)
+{
+  return CGAL::IO::read_polygon_mesh(file, mesh) && !faces(mesh).empty() && is_triangle_mesh(mesh);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::string camel = std::string(SHAPE_ANALYSIS_DATA_DIR) + "/camel.off";
+  std::string armadillo = std::string(SHAPE_ANALYSIS_DATA_DIR) + "/armadillo.off";
+  std::string output;
+  std::size_t samples = 400, repeats = 5, target_faces = 4000, other = 0;
+  for(int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc) {
+        std::cerr << "missing value after " << arg << '\n';
+        std::exit(EXIT_FAILURE);
+      }
+      return argv[++i];
+    };
+    if(arg == "--samples")
+      samples = std::stoul(value());
+    else if(arg == "--repeats")
+      repeats = std::max<std::size_t>(1, std::stoul(value()));
+    else if(arg == "--faces")
+      target_faces = std::stoul(value());
+    else if(arg == "--camel")
+      camel = value();
+    else if(arg == "--armadillo")
+      armadillo = value();
+    else if(arg == "--other-samplers")
+      other = std::stoul(value());
+    else if(arg == "--output")
+      output = value();
+    else {
+      std::cerr << "usage: " << argv[0]
+                << " [--samples 400] [--repeats 5] [--faces 4000] [--camel FILE]"
+                   " [--armadillo FILE] [--other-samplers N] [--output FILE]\n";
+      return arg == "--help" ? EXIT_SUCCESS : EXIT_FAILURE;
+    }
+  }
+
+  Json report = Json::object();
+  report["benchmark"] = "partition_function_speed";
+  report["hardware_threads"] = std::thread::hardware_concurrency();
+  report["tbb"] = CGAL::Shape_analysis::internal::parallel_available();
+  Json thesis = Json::object();
+  thesis["seconds_per_min_cut_sample"] = 0.6;
+  thesis["seconds_per_mesh_400_samples"] = 240.0;
+  thesis["faces"] = 4000;
+  report["thesis"] = thesis;
+
+  // camel, decimated with CGAL's edge collapse.
+  Mesh mesh;
+  if(!read_mesh(camel, mesh)) {
+    std::cerr << "cannot read " << camel << '\n';
+    return EXIT_FAILURE;
+  }
+  const std::size_t original_faces = num_faces(mesh);
+  const auto decimate_start = std::chrono::steady_clock::now();
+  // A closed triangle mesh has 3/2 edges per face.
+  SMS::Count_stop_predicate<Mesh> stop(target_faces * 3 / 2);
+  SMS::edge_collapse(mesh, stop);
+  mesh.collect_garbage();
+  const double decimate_seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - decimate_start).count();
+  std::cerr << camel << ": " << original_faces << " faces decimated to " << num_faces(mesh)
+            << " in " << decimate_seconds << " s\n";
+
+  Json camel_json = Json::object();
+  camel_json["input"] = camel;
+  camel_json["original_faces"] = original_faces;
+  camel_json["faces"] = num_faces(mesh);
+  camel_json["decimation"] = "CGAL::Surface_mesh_simplification::edge_collapse, Count_stop_predicate, "
+                             "Lindstrom-Turk";
+  camel_json["decimation_seconds"] = decimate_seconds;
+  double all_median = 0;
+  Json all = time_partition_function(mesh, RC::MIN_CUT, samples, 0, repeats,
+                                     "camel min-cut all threads", &all_median);
+  Json one = time_partition_function(mesh, RC::MIN_CUT, samples, 1, repeats, "camel min-cut 1 thread");
+  const double ours_per_sample = all_median / double(samples);
+  camel_json["min_cut_all_threads"] = all;
+  camel_json["min_cut_one_thread"] = one;
+  camel_json["speedup_over_thesis_per_sample"] = 0.6 / ours_per_sample;
+  if(other > 0) {
+    camel_json["k_means_all_threads"] =
+      time_partition_function(mesh, RC::K_MEANS, other, 0, 1, "camel k-means");
+    camel_json["hierarchical_all_threads"] =
+      time_partition_function(mesh, RC::HIERARCHICAL, other, 0, 1, "camel hierarchical");
+  }
+  report["camel_decimated"] = camel_json;
+
+  Mesh big;
+  if(read_mesh(armadillo, big)) {
+    Json a = Json::object();
+    a["input"] = armadillo;
+    a["faces"] = num_faces(big);
+    a["min_cut_all_threads"] = time_partition_function(big, RC::MIN_CUT, samples, 0,
+                                                       std::min<std::size_t>(repeats, 3),
+                                                       "armadillo min-cut all threads");
+    if(other > 0) {
+      a["k_means_all_threads"] = time_partition_function(big, RC::K_MEANS, other, 0, 1, "armadillo k-means");
+      a["hierarchical_all_threads"] =
+        time_partition_function(big, RC::HIERARCHICAL, other, 0, 1, "armadillo hierarchical");
+    }
+    report["armadillo"] = a;
+  } else {
+    report["armadillo"] = "cannot read " + armadillo;
+  }
+
+  const std::string text = report.dump();
+  std::cout << text << '\n';
+  if(!output.empty()) {
+    std::ofstream out(output);
+    out << text << '\n';
+  }
+  return EXIT_SUCCESS;
+}
