@@ -84,6 +84,29 @@ double signed_dihedral(const Mesh& mesh, Edge e)
   return concave ? angle : -angle;
 }
 
+// Each round, an edge takes the largest value among the edges of its two faces: values spread
+// by one ring of faces per round (a cut made one ring away from an edge then counts for it).
+std::vector<double> dilate(const Mesh& mesh, std::vector<double> values, int rounds)
+{
+  std::vector<double> face_value(mesh.number_of_faces());
+  for(int r = 0; r < rounds; ++r) {
+    for(Face f : faces(mesh)) {
+      double v = 0;
+      for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+        v = (std::max)(v, values[edge(h, mesh).idx()]);
+      face_value[f.idx()] = v;
+    }
+    for(Edge e : edges(mesh)) {
+      double v = values[e.idx()];
+      for(auto h : {halfedge(e, mesh), opposite(halfedge(e, mesh), mesh)})
+        if(!is_border(h, mesh))
+          v = (std::max)(v, face_value[face(h, mesh).idx()]);
+      values[e.idx()] = v;
+    }
+  }
+  return values;
+}
+
 struct Class_sums
 {
   std::map<std::string, double> sum;
@@ -100,7 +123,7 @@ void usage(const char* name)
   std::cerr << "usage: " << name
             << " [--ids 1,2,21-28] [--classes Human,Cup] [--psb DIR] [--samples 400]"
                " [--method mincut|kmeans|hierarchical] [--part-size 0.05] [--no-segmentation]"
-               " [--no-hierarchical] [--no-sdf] [--output FILE]\n";
+               " [--no-hierarchical] [--no-sdf] [--edge-variants] [--output FILE]\n";
 }
 
 } // namespace
@@ -115,7 +138,7 @@ int main(int argc, char** argv)
   double part_size = 0.05;
   RC::Sampling_method method = RC::MIN_CUT;
   std::string method_name = "mincut";
-  bool with_segmentation = true, with_hierarchical = true, with_sdf = true;
+  bool with_segmentation = true, with_hierarchical = true, with_sdf = true, edge_variants = false;
   for(int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -159,6 +182,8 @@ int main(int argc, char** argv)
       with_hierarchical = false;
     else if(arg == "--no-sdf")
       with_sdf = false;
+    else if(arg == "--edge-variants")
+      edge_variants = true;
     else {
       usage(argv[0]);
       return arg == "--help" ? EXIT_SUCCESS : EXIT_FAILURE;
@@ -177,6 +202,7 @@ int main(int argc, char** argv)
   settings["segmentation"] = with_segmentation;
   settings["hierarchical"] = with_hierarchical;
   settings["sdf"] = with_sdf;
+  settings["edge_variants"] = edge_variants;
   report["settings"] = settings;
   report["metrics"] =
     "rand_index_error: 1 - RI, mean over human segmentations, meshes of a class, classes; "
@@ -299,6 +325,38 @@ int main(int argc, char** argv)
       }
       const psb::Edge_prediction pf = psb::predict_edges(pf_score, positive);
       const psb::Edge_prediction cc = psb::predict_edges(concavity_score, positive);
+      if(edge_variants) {
+        // Other samplers, their mean, and values spread by one or two rings of faces (the
+        // concavity spread the same way, for a fair comparison).
+        std::map<std::string, std::vector<double>> by_edge;
+        by_edge["mincut"] = values;
+        for(RC::Sampling_method other : {RC::K_MEANS, RC::HIERARCHICAL}) {
+          std::vector<double> v(mesh.number_of_edges(), 0.0);
+          RC::partition_function(mesh, CGAL::make_property_map(v),
+                                 RC::parameters::number_of_samples(samples).sampling_method(other));
+          by_edge[other == RC::K_MEANS ? "kmeans" : "hierarchical"] = v;
+        }
+        std::vector<double> mix(mesh.number_of_edges(), 0.0), concavity(mesh.number_of_edges(), -4.0);
+        for(std::size_t e = 0; e < mix.size(); ++e)
+          mix[e] = (by_edge["mincut"][e] + by_edge["kmeans"][e] + by_edge["hierarchical"][e]) / 3.0;
+        by_edge["mix"] = mix;
+        for(Edge e : edges(mesh))
+          if(!is_border(e, mesh))
+            concavity[e.idx()] = signed_dihedral(mesh, e);
+        by_edge["concavity"] = concavity;
+        for(const std::string name : {"mincut", "mix", "concavity"})
+          for(int rounds : {1, 2})
+            by_edge[name + "_dilated" + std::to_string(rounds)] = dilate(mesh, by_edge[name], rounds);
+        for(const auto& kv : by_edge) {
+          std::vector<double> score;
+          for(Edge e : edges(mesh))
+            if(!is_border(e, mesh))
+              score.push_back(kv.second[e.idx()]);
+          const psb::Edge_prediction x = psb::predict_edges(score, positive);
+          record("variant_" + kv.first + "_auc", x.auc);
+          record("variant_" + kv.first + "_top2_precision", x.top_precision);
+        }
+      }
       record("pf_auc", pf.auc);
       record("pf_top2_precision", pf.top_precision);
       record("concavity_auc", cc.auc);

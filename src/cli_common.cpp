@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <unistd.h>
 
@@ -75,6 +76,11 @@ Input_mesh read_triangle_mesh(const std::string& path)
     }
   }
 
+  // The file's vertex index of every position (the smallest when the file repeats a point).
+  std::map<Point_3, std::size_t> first_index;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    first_index.emplace(points[i], i);
+
   // One point per position: files that repeat points along seams, or give each face its own
   // corners, become connected surfaces. Face order is kept.
   result.merged_points = PMP::merge_duplicate_points_in_polygon_soup(result.points, polygons);
@@ -126,6 +132,22 @@ Input_mesh read_triangle_mesh(const std::string& path)
     result.triangles[i] = {polygons[i][0], polygons[i][1], polygons[i][2]};
   for(std::size_t k = 0; k < kept.size(); ++k) // as oriented
     result.triangles[kept_input[k]] = {kept[k][0], kept[k][1], kept[k][2]};
+
+  // Orienting may have duplicated points: every point's file index is found by its position.
+  result.input_index.resize(result.points.size());
+  for(std::size_t i = 0; i < result.points.size(); ++i)
+    result.input_index[i] = first_index.at(result.points[i]);
+  // The mesh's vertices: face k of the mesh is kept[k], whose three corners have distinct
+  // positions, so each vertex is matched to its point by position.
+  result.vertex_point.assign(num_vertices(result.mesh), Input_mesh::left_out);
+  std::size_t k = 0;
+  for(Mesh::Face_index f : faces(result.mesh)) {
+    for(Mesh::Vertex_index v : vertices_around_face(halfedge(f, result.mesh), result.mesh))
+      for(std::size_t p : kept[k])
+        if(result.points[p] == result.mesh.point(v))
+          result.vertex_point[v] = p;
+    ++k;
+  }
   return result;
 }
 
@@ -390,6 +412,78 @@ void write_labels(std::ostream& out, const std::vector<std::size_t>& labels)
     buffer += '\n';
   }
   out << buffer;
+}
+
+Input_mesh read_input_mesh(const std::string& path, Progress& progress, double& read_seconds)
+{
+  progress.stage("reading " + path);
+  Stopwatch reading;
+  Input_mesh mesh = read_triangle_mesh(path);
+  read_seconds = reading.seconds();
+  if(mesh.merged_points > 0 || mesh.left_out_faces > 0)
+    progress.stage("merged " + std::to_string(mesh.merged_points) + " duplicate points; left " +
+                   std::to_string(mesh.left_out_faces) + " degenerate or repeated faces out");
+  return mesh;
+}
+
+std::vector<std::size_t>
+labels_per_input_face(const Input_mesh& input,
+                      const Mesh::Property_map<Mesh::Face_index, std::size_t>& mesh_labels)
+{
+  std::vector<std::size_t> labels;
+  labels.reserve(num_faces(input.mesh));
+  for(auto f : faces(input.mesh))
+    labels.push_back(mesh_labels[f]);
+  return input.input_labels(labels);
+}
+
+void stage_segmentation(Output_files& outputs, Progress& progress, const Input_mesh& input,
+                        const std::vector<std::size_t>& labels, const std::string& ply,
+                        const std::string& seg)
+{
+  if(!ply.empty()) {
+    progress.stage("writing " + ply);
+    outputs.stage(ply, true, [&](std::ostream& out) {
+      write_labelled_ply(out, input.points, input.triangles, labels);
+    });
+  }
+  if(!seg.empty()) {
+    progress.stage("writing " + seg);
+    outputs.stage(seg, false, [&](std::ostream& out) { write_labels(out, labels); });
+  }
+}
+
+void add_input_report(Json& report, const std::string& prefix, const std::string& path,
+                      const Input_mesh& input)
+{
+  report[prefix.empty() ? std::string("input") : prefix] = path;
+  const std::string p = prefix.empty() ? std::string() : prefix + "_";
+  report[p + "faces"] = input.number_of_input_faces();
+  report[p + "vertices"] = input.points.size();
+  report[p + "merged_duplicate_points"] = input.merged_points;
+  report[p + "left_out_faces"] = input.left_out_faces;
+}
+
+Json input_report(const std::string& command, const std::string& path, const Input_mesh& input)
+{
+  Json report = Json::object();
+  report["command"] = command;
+  add_input_report(report, "", path, input);
+  return report;
+}
+
+void stage_report(Output_files& outputs, const std::string& path, Json report, double seconds,
+                  double read_seconds, double total_seconds,
+                  const std::vector<std::pair<std::string, std::string>>& named_outputs)
+{
+  report["seconds"] = seconds;
+  report["seconds_reading"] = read_seconds;
+  report["seconds_total"] = total_seconds;
+  Json out = Json::object();
+  for(const auto& o : named_outputs)
+    out[o.first] = o.second.empty() ? Json() : Json(o.second);
+  report["outputs"] = out;
+  outputs.stage(path, false, [&](std::ostream& s) { s << report.dump() << '\n'; });
 }
 
 Progress::Progress(std::string command, bool quiet, bool verbose)

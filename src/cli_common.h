@@ -48,6 +48,9 @@ struct Input_mesh
   std::vector<std::size_t> mesh_face;           // per input face: its face in `mesh`, or `left_out`
   std::size_t merged_points = 0;                // duplicate points merged
   std::size_t left_out_faces = 0;               // degenerate or repeated faces left out of `mesh`
+  std::vector<std::size_t> input_index;         // per point: the smallest index of the file's
+                                                // vertices at that position
+  std::vector<std::size_t> vertex_point;        // per vertex of `mesh` (by index): its point
 
   static constexpr std::size_t left_out = static_cast<std::size_t>(-1);
 
@@ -85,6 +88,12 @@ public:
   // Declares an output before any work: checks that its directory exists and is writable and
   // that it is neither an input nor another output. Throws Cli_error / Usage_error otherwise.
   void add_output(const std::string& path, const std::string& what);
+  // The same for an output that was not asked for when `path` is empty (then nothing happens).
+  void add_optional_output(const std::string& path, const std::string& what)
+  {
+    if(!path.empty())
+      add_output(path, what);
+  }
 
   // Writes the content produced by `writer` into a temporary file for the declared `path`.
   void stage(const std::string& path, bool binary, const std::function<void(std::ostream&)>& writer);
@@ -113,6 +122,33 @@ void write_labelled_ply(std::ostream& out, const std::vector<Point_3>& points,
 
 // One label per line.
 void write_labels(std::ostream& out, const std::vector<std::size_t>& labels);
+
+// Reads the input mesh of a subcommand, with a progress note on what was repaired.
+class Progress;
+Input_mesh read_input_mesh(const std::string& path, Progress& progress, double& read_seconds);
+
+// Labels per input face from the face labels of `input.mesh` in a property map.
+std::vector<std::size_t>
+labels_per_input_face(const Input_mesh& input,
+                      const Mesh::Property_map<Mesh::Face_index, std::size_t>& mesh_labels);
+
+// Stages the outputs of a segmentation: the coloured mesh (`ply`) and the label file (`seg`);
+// an empty path is skipped.
+void stage_segmentation(Output_files& outputs, Progress& progress, const Input_mesh& input,
+                        const std::vector<std::size_t>& labels, const std::string& ply,
+                        const std::string& seg);
+
+// The start of a JSON report: the command and what the input mesh (`prefix` names it in
+// reports with several inputs) is made of.
+Json input_report(const std::string& command, const std::string& path, const Input_mesh& input);
+void add_input_report(Json& report, const std::string& prefix, const std::string& path,
+                      const Input_mesh& input);
+
+// Adds "seconds", "seconds_reading", "seconds_total" and "outputs" (name -> path or null) and
+// stages the report at `path`.
+void stage_report(Output_files& outputs, const std::string& path, Json report, double seconds,
+                  double read_seconds, double total_seconds,
+                  const std::vector<std::pair<std::string, std::string>>& named_outputs);
 
 // Progress on stderr when it is a terminal (stage lines and a percentage), or on request
 // (`verbose`: stage lines even when stderr is a file or a pipe); nothing with `quiet`.
@@ -146,6 +182,8 @@ private:
 
 // Registration of the subcommands (one translation unit each).
 void add_segment_command(CLI::App& app, std::function<int()>& run);
+void add_register_command(CLI::App& app, std::function<int()>& run);
+void add_partition_commands(CLI::App& app, std::function<int()>& run); // partition, partition-segment
 
 } // namespace shape_analysis_cli
 

@@ -39,22 +39,14 @@ int run_segment(const Segment_options& o)
   outputs.add_input(o.input);
   if(!o.prior.empty())
     outputs.add_input(o.prior);
-  if(!o.output_ply.empty())
-    outputs.add_output(o.output_ply, "coloured mesh");
-  if(!o.output_seg.empty())
-    outputs.add_output(o.output_seg, "labels");
-  if(!o.report.empty())
-    outputs.add_output(o.report, "report");
+  outputs.add_optional_output(o.output_ply, "coloured mesh");
+  outputs.add_optional_output(o.output_seg, "labels");
+  outputs.add_optional_output(o.report, "report");
 
-  progress.stage("reading " + o.input);
-  Stopwatch reading;
-  Input_mesh input = read_triangle_mesh(o.input);
+  double read_seconds = 0;
+  Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
   Mesh& mesh = input.mesh;
-  const double read_seconds = reading.seconds();
   const std::size_t n = input.number_of_input_faces();
-  if(input.merged_points > 0 || input.left_out_faces > 0)
-    progress.stage("merged " + std::to_string(input.merged_points) + " duplicate points; left " +
-                   std::to_string(input.left_out_faces) + " degenerate or repeated faces out");
 
   std::vector<long long> prior;
   if(!o.prior.empty()) {
@@ -90,11 +82,7 @@ int run_segment(const Segment_options& o)
   const double segment_seconds = segmenting.seconds();
   progress.done();
 
-  std::vector<std::size_t> mesh_labels;
-  mesh_labels.reserve(num_faces(mesh));
-  for(auto f : faces(mesh))
-    mesh_labels.push_back(segment_map[f]);
-  const std::vector<std::size_t> labels = input.input_labels(mesh_labels);
+  const std::vector<std::size_t> labels = labels_per_input_face(input, segment_map);
   std::vector<double> areas(k, 0.0);
   std::vector<std::size_t> counts(k, 0);
   for(std::size_t i = 0; i < n; ++i) {
@@ -106,24 +94,9 @@ int run_segment(const Segment_options& o)
     ++counts[labels[i]];
   }
 
-  if(!o.output_ply.empty()) {
-    progress.stage("writing " + o.output_ply);
-    outputs.stage(o.output_ply, true, [&](std::ostream& out) {
-      write_labelled_ply(out, input.points, input.triangles, labels);
-    });
-  }
-  if(!o.output_seg.empty()) {
-    progress.stage("writing " + o.output_seg);
-    outputs.stage(o.output_seg, false, [&](std::ostream& out) { write_labels(out, labels); });
-  }
+  stage_segmentation(outputs, progress, input, labels, o.output_ply, o.output_seg);
   if(!o.report.empty()) {
-    Json report = Json::object();
-    report["command"] = "segment";
-    report["input"] = o.input;
-    report["faces"] = n;
-    report["vertices"] = input.points.size();
-    report["merged_duplicate_points"] = input.merged_points;
-    report["left_out_faces"] = input.left_out_faces;
+    Json report = input_report("segment", o.input, input);
     report["segments"] = k;
     Json parameters = Json::object();
     parameters["segments"] = o.segments;
@@ -134,16 +107,10 @@ int run_segment(const Segment_options& o)
     parameters["link_factor"] = o.link_factor;
     parameters["boundary_refinement"] = !o.no_refinement;
     report["parameters"] = parameters;
-    report["seconds"] = segment_seconds;
-    report["seconds_reading"] = read_seconds;
-    report["seconds_total"] = total.seconds();
     report["segment_faces"] = counts;
     report["segment_areas"] = areas;
-    Json outputs_json = Json::object();
-    outputs_json["mesh"] = o.output_ply.empty() ? Json() : Json(o.output_ply);
-    outputs_json["labels"] = o.output_seg.empty() ? Json() : Json(o.output_seg);
-    report["outputs"] = outputs_json;
-    outputs.stage(o.report, false, [&](std::ostream& out) { out << report.dump() << '\n'; });
+    stage_report(outputs, o.report, report, segment_seconds, read_seconds, total.seconds(),
+                 {{"mesh", o.output_ply}, {"labels", o.output_seg}});
   }
   outputs.commit();
 

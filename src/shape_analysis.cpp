@@ -34,6 +34,8 @@ int main(int argc, char** argv)
   app.set_version_flag("--version", "shape_analysis 0.1.0");
   std::function<int()> run;
   add_segment_command(app, run);
+  add_register_command(app, run);
+  add_partition_commands(app, run);
 
   try {
     app.parse(argc, argv);

@@ -13,12 +13,14 @@
 #include <CGAL/Shape_analysis/internal/Component_links.h>
 #include <CGAL/Shape_analysis/internal/Dual_graph.h>
 #include <CGAL/Shape_analysis/internal/Json.h>
+#include <CGAL/Shape_analysis/internal/Max_flow.h>
 #include <CGAL/Shape_analysis/internal/Mesh_checks.h>
 #include <CGAL/Shape_analysis/internal/Min_cut.h>
 #include <CGAL/Shape_analysis/internal/Normalized_cut_clustering.h>
 #include <CGAL/Shape_analysis/internal/Partition_refinement.h>
 #include <CGAL/Shape_analysis/internal/Point_tree.h>
 #include <CGAL/Shape_analysis/internal/Procedural_shapes.h>
+#include <CGAL/Shape_analysis/internal/Shortest_paths.h>
 
 #include <gtest/gtest.h>
 
@@ -1374,6 +1376,251 @@ TEST(ProceduralShapes, PartitionAgreementMeasures)
   EXPECT_NEAR(SAI::matched_overlap(a, std::vector<int>{0, 0, 1, 1, 1, 2}, &w), 9.0 / 10.0, 1e-15);
   EXPECT_EQ(SAI::rand_index(a, a, &w), 1.0);
   EXPECT_THROW(SAI::rand_index(a, std::vector<int>{0}), std::invalid_argument);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Boykov-Kolmogorov max-flow between two nodes, shortest paths, induced subgraphs
+
+// A directed graph in compressed rows where every arc has a reverse arc (its own capacity).
+struct Arc_graph
+{
+  std::size_t n = 0;
+  std::vector<std::size_t> first;
+  std::vector<std::uint32_t> target, reverse, tail;
+
+  // Undirected pairs, each giving the arcs u->v and v->u.
+  Arc_graph(std::size_t nodes, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) : n(nodes)
+  {
+    std::vector<std::vector<std::pair<std::uint32_t, std::size_t>>> out(n); // (target, slot)
+    for(std::size_t p = 0; p < pairs.size(); ++p) {
+      out[pairs[p].first].emplace_back(pairs[p].second, 2 * p);
+      out[pairs[p].second].emplace_back(pairs[p].first, 2 * p + 1);
+    }
+    std::vector<std::uint32_t> arc_of_slot(2 * pairs.size());
+    first.assign(1, 0);
+    for(std::uint32_t u = 0; u < n; ++u) {
+      for(const auto& a : out[u]) {
+        arc_of_slot[a.second] = static_cast<std::uint32_t>(target.size());
+        target.push_back(a.first);
+        tail.push_back(u);
+      }
+      first.push_back(target.size());
+    }
+    reverse.resize(target.size());
+    for(std::size_t p = 0; p < pairs.size(); ++p) {
+      reverse[arc_of_slot[2 * p]] = arc_of_slot[2 * p + 1];
+      reverse[arc_of_slot[2 * p + 1]] = arc_of_slot[2 * p];
+    }
+  }
+
+  // Capacity of the arcs leaving the node set `side` (true) to the rest.
+  double cut(const std::vector<double>& capacity, const std::vector<bool>& side) const
+  {
+    double c = 0;
+    for(std::size_t a = 0; a < target.size(); ++a)
+      if(side[tail[a]] && !side[target[a]])
+        c += capacity[a];
+    return c;
+  }
+};
+
+TEST(MaxFlow, MatchesBruteForceOnRandomDirectedGraphs)
+{
+  SAI::Bk_max_flow::Workspace w; // reused across problems of different sizes
+  for(std::uint64_t seed = 1; seed <= 300; ++seed) {
+    SAI::Procedural_random rng(seed);
+    const std::size_t n = 2 + rng.index(10); // 2..11 nodes
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    for(std::uint32_t u = 0; u < n; ++u)
+      for(std::uint32_t v = u + 1; v < n; ++v)
+        if(rng.uniform() < 0.5)
+          pairs.emplace_back(u, v);
+    const Arc_graph g(n, pairs);
+    std::vector<double> capacity(g.target.size());
+    for(double& c : capacity) // zeros, ties and one-way arcs included
+      c = rng.uniform() < 0.25 ? 0.0 : double(1 + rng.index(6));
+    const std::uint32_t s = static_cast<std::uint32_t>(rng.index(n));
+    std::uint32_t t = static_cast<std::uint32_t>(rng.index(n));
+    if(t == s)
+      t = static_cast<std::uint32_t>((s + 1) % n);
+    SAI::Bk_max_flow flow(g.first, g.target, g.reverse);
+    const double value = flow.solve(capacity, s, t, w);
+    double best = std::numeric_limits<double>::infinity();
+    std::vector<bool> side(n);
+    for(std::uint32_t mask = 0; mask < (1u << n); ++mask) {
+      if(!((mask >> s) & 1u) || ((mask >> t) & 1u))
+        continue;
+      for(std::size_t u = 0; u < n; ++u)
+        side[u] = (mask >> u) & 1u;
+      best = (std::min)(best, g.cut(capacity, side));
+    }
+    ASSERT_EQ(value, best) << "seed " << seed; // integer capacities: exact
+    for(std::size_t u = 0; u < n; ++u)
+      side[u] = SAI::Bk_max_flow::is_source_side(w, u);
+    EXPECT_TRUE(side[s]);
+    EXPECT_FALSE(side[t]);
+    EXPECT_EQ(g.cut(capacity, side), best) << "seed " << seed << ": the sides realize the minimum";
+  }
+}
+
+TEST(MaxFlow, AgreesWithBoostOnAMeshDualGraph)
+{
+  // Many cuts on the dual graph of a real shape, with random capacities: the flow value of our
+  // solver equals the one of Boost's Boykov-Kolmogorov (through Min_cut_solver with two hard
+  // constraints), and its sides realize it.
+  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::three_sphere_chain(), 0.3);
+  Mesh m;
+  SAI::fill_polygon_mesh(lm, m);
+  SAI::Dual_graph g;
+  SAI::build_dual_graph(m, get(CGAL::vertex_point, m), get(CGAL::face_index, m), 10.0, g);
+  SAI::Dual_graph_min_cut ours(g);
+  SAI::Dual_graph_min_cut::Workspace w;
+  SAI::Min_cut_solver boost_solver(g.number_of_nodes());
+  for(std::size_t e = 0; e < g.number_of_edges(); ++e)
+    boost_solver.add_edge(g.edge_source[e], g.edge_target[e]);
+  boost_solver.finalize();
+  SAI::Procedural_random rng(11);
+  std::vector<double> capacity(g.number_of_edges());
+  for(int round = 0; round < 25; ++round) {
+    for(double& c : capacity)
+      c = round % 2 == 0 ? rng.uniform(0, 1) : std::pow(rng.uniform(), 8.0);
+    for(std::size_t e = 0; e < capacity.size(); ++e)
+      boost_solver.set_edge_capacity(e, capacity[e], capacity[e]);
+    const std::size_t s = rng.index(g.number_of_nodes());
+    std::size_t t = rng.index(g.number_of_nodes());
+    if(t == s)
+      t = (s + 1) % g.number_of_nodes();
+    boost_solver.clear_terminals();
+    boost_solver.constrain(s, SAI::Min_cut_solver::SOURCE);
+    boost_solver.constrain(t, SAI::Min_cut_solver::SINK);
+    const double expected = boost_solver.solve();
+    const double value = ours.solve(capacity, s, t, w);
+    EXPECT_NEAR(value, expected, 1e-9 * (1 + expected)) << "round " << round;
+    double across = 0;
+    for(std::size_t e = 0; e < g.number_of_edges(); ++e)
+      if(SAI::Dual_graph_min_cut::is_source_side(w, g.edge_source[e]) !=
+         SAI::Dual_graph_min_cut::is_source_side(w, g.edge_target[e]))
+        across += capacity[e];
+    EXPECT_NEAR(across, value, 1e-9 * (1 + value)) << "round " << round;
+    EXPECT_TRUE(SAI::Dual_graph_min_cut::is_source_side(w, s));
+    EXPECT_FALSE(SAI::Dual_graph_min_cut::is_source_side(w, t));
+  }
+}
+
+// A small dual graph given by its edges (positions and sizes unused).
+SAI::Dual_graph graph_of(std::size_t n, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges,
+                         const std::vector<double>& lengths)
+{
+  SAI::Dual_graph g;
+  g.node_size.assign(n, 1.0);
+  g.node_position.assign(n, Vector_3d());
+  g.node_normal.assign(n, Vector_3d());
+  for(std::size_t e = 0; e < edges.size(); ++e)
+    g.add_edge(edges[e].first, edges[e].second, 1.0, 1.0, 1.0, lengths[e], e);
+  g.number_of_mesh_edges = edges.size();
+  g.build_adjacency();
+  return g;
+}
+
+TEST(ShortestPaths, MatchBellmanFordWithLabelsAndRegions)
+{
+  SAI::Graph_shortest_paths paths; // reused across graphs and runs
+  for(std::uint64_t seed = 1; seed <= 60; ++seed) {
+    SAI::Procedural_random rng(seed);
+    const std::size_t n = 1 + rng.index(40);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    std::vector<double> length;
+    for(std::uint32_t u = 0; u < n; ++u)
+      for(std::uint32_t v = u + 1; v < n; ++v)
+        if(rng.uniform() < 3.0 / double(n)) {
+          edges.emplace_back(u, v);
+          length.push_back(rng.uniform() < 0.1 ? 0.0 : double(rng.index(5)) + rng.uniform());
+        }
+    const SAI::Dual_graph g = graph_of(n, edges, length);
+    std::vector<std::uint32_t> sources, labels;
+    for(std::size_t k = 0, count = 1 + rng.index(3); k < count; ++k) {
+      sources.push_back(static_cast<std::uint32_t>(rng.index(n)));
+      labels.push_back(static_cast<std::uint32_t>(10 + k));
+    }
+    std::vector<char> region(n);
+    for(char& r : region)
+      r = rng.uniform() < 0.8 ? 1 : 0;
+    for(int restricted = 0; restricted < 2; ++restricted) {
+      auto allowed = [&](std::uint32_t i) { return restricted == 0 || region[i] == 1; };
+      // Bellman-Ford reference.
+      std::vector<double> d(n, std::numeric_limits<double>::infinity());
+      for(std::uint32_t s : sources)
+        if(allowed(s))
+          d[s] = 0;
+      for(std::size_t pass = 0; pass < n; ++pass)
+        for(std::size_t e = 0; e < edges.size(); ++e) {
+          const std::uint32_t u = edges[e].first, v = edges[e].second;
+          if(!allowed(u) || !allowed(v))
+            continue;
+          d[v] = (std::min)(d[v], d[u] + length[e]);
+          d[u] = (std::min)(d[u], d[v] + length[e]);
+        }
+      paths.run_within(g, length, sources, labels, {}, allowed);
+      std::set<std::uint32_t> settled(paths.settled().begin(), paths.settled().end());
+      EXPECT_EQ(settled.size(), paths.settled().size()) << "a node settled twice";
+      for(std::uint32_t i = 0; i < n; ++i) {
+        ASSERT_EQ(paths.distance(i), d[i]) << "seed " << seed << " node " << i;
+        EXPECT_EQ(settled.count(i) == 1, std::isfinite(d[i]));
+        if(!std::isfinite(d[i])) {
+          EXPECT_EQ(paths.label(i), SAI::Graph_shortest_paths::no_label);
+          continue;
+        }
+        // The label is the one of a source at that distance along some path: some source k
+        // with the label has d(k, i) == d[i]; check it is one of the labels, and that a node and
+        // a neighbour on a shortest path share labels consistently (nearest source wins).
+        EXPECT_GE(paths.label(i), 10u);
+        EXPECT_LT(paths.label(i), 10u + sources.size());
+      }
+      // Settled in non-decreasing distance.
+      for(std::size_t k = 1; k < paths.settled().size(); ++k)
+        EXPECT_LE(paths.distance(paths.settled()[k - 1]), paths.distance(paths.settled()[k]));
+    }
+  }
+}
+
+TEST(ShortestPaths, LabelsFormAVoronoiPartition)
+{
+  // A path graph 0 - 1 - ... - 9 with unit lengths, sources at 1 (label 0) and 8 (label 1).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  for(std::uint32_t i = 0; i + 1 < 10; ++i)
+    edges.emplace_back(i, i + 1);
+  const SAI::Dual_graph g = graph_of(10, edges, std::vector<double>(9, 1.0));
+  SAI::Graph_shortest_paths paths;
+  paths.run(g, std::vector<double>(9, 1.0), {1, 8}, {0, 1});
+  for(std::uint32_t i = 0; i < 10; ++i)
+    EXPECT_EQ(paths.label(i), i < 5 ? 0u : 1u) << i; // 4 and 5 are closer to 1 and 8 resp.
+  EXPECT_EQ(paths.distance(0), 1.0);
+  EXPECT_EQ(paths.distance(9), 1.0);
+  // Offsets: a source that starts later loses ground.
+  paths.run(g, std::vector<double>(9, 1.0), {1, 8}, {0, 1}, {0.0, 2.0});
+  EXPECT_EQ(paths.label(5), 0u); // 4 from node 1, 2 + 3 from node 8
+  EXPECT_EQ(paths.distance(5), 4.0);
+  EXPECT_EQ(paths.label(6), 1u); // 5 from node 1, 2 + 2 from node 8
+  EXPECT_EQ(paths.distance(6), 4.0);
+}
+
+TEST(DualGraph, InducedSubgraphKeepsInternalEdgesAndMeshEdges)
+{
+  // 0 - 1 - 2 - 3 and 1 - 3.
+  const SAI::Dual_graph g = graph_of(4, {{0, 1}, {1, 2}, {2, 3}, {1, 3}}, {1, 2, 3, 4});
+  SAI::Dual_graph sub;
+  std::vector<std::uint32_t> parent;
+  SAI::induced_subgraph(g, {1, 2, 3}, sub, parent);
+  EXPECT_EQ(sub.number_of_nodes(), 3u);
+  ASSERT_EQ(sub.number_of_edges(), 3u);
+  EXPECT_EQ(parent, (std::vector<std::uint32_t>{1, 2, 3}));
+  for(std::size_t e = 0; e < 3; ++e) {
+    EXPECT_EQ(sub.mesh_edge[e], g.mesh_edge[parent[e]]);
+    EXPECT_EQ(sub.traversal_cost[e], g.traversal_cost[parent[e]]);
+  }
+  EXPECT_EQ(sub.edge_source[0], 0u); // old node 1
+  EXPECT_EQ(sub.edge_target[0], 1u); // old node 2
+  EXPECT_EQ(sub.first_arc.back(), 6u);
 }
 
 } // namespace

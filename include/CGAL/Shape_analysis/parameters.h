@@ -39,7 +39,13 @@ namespace internal_np {
   X(number_of_threads_t, number_of_threads_tag, number_of_threads)                   \
   X(number_of_cuts_t, number_of_cuts_tag, number_of_cuts)                            \
   X(duplicate_tolerance_t, duplicate_tolerance_tag, duplicate_tolerance)             \
-  X(edge_value_map_t, edge_value_map_tag, edge_value_map)
+  X(edge_value_map_t, edge_value_map_tag, edge_value_map)                            \
+  X(flexible_weight_t, flexible_weight_tag, flexible_weight)                         \
+  X(stiffness_exponent_t, stiffness_exponent_tag, stiffness_exponent)                \
+  X(value_scale_t, value_scale_tag, value_scale)                                     \
+  X(number_of_points_t, number_of_points_tag, number_of_points)                      \
+  X(partition_weighting_t, partition_weighting_tag, partition_weighting)             \
+  X(spread_rings_t, spread_rings_tag, spread_rings)
 
 #define CGAL_SHAPE_ANALYSIS_DECLARE_TAG(X, Y, Z) enum X { Y };
 CGAL_SHAPE_ANALYSIS_NAMED_PARAMETER_LIST(CGAL_SHAPE_ANALYSIS_DECLARE_TAG)

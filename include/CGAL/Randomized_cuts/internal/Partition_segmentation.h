@@ -127,7 +127,10 @@ private:
       return p;
     }
     Sampling_options so = m_o.sampling;
-    so.seed = SAI::Random_stream::mix(m_o.sampling.seed + 0x9E3779B97F4A7C15ull * index);
+    // The whole graph is sampled with the caller's seed (its partition function is then the one
+    // partition_function() gives); every later segment with a seed of its own.
+    so.seed = index == 0 ? m_o.sampling.seed
+                         : SAI::Random_stream::mix(m_o.sampling.seed + 0x9E3779B97F4A7C15ull * index);
     so.keep_samples = true;
     so.convergence_tolerance = m_o.sampling.convergence_tolerance;
     const std::size_t step = m_steps_done;

@@ -1,0 +1,448 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_RANDOMIZED_CUTS_REGISTER_MESHES_H
+#define CGAL_RANDOMIZED_CUTS_REGISTER_MESHES_H
+
+/// \file register_meshes.h
+
+#include <CGAL/Randomized_cuts/partition_function.h>
+#include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/parameters.h>
+#include <CGAL/Shape_analysis/internal/Dual_graph.h>
+#include <CGAL/Shape_analysis/internal/Mesh_checks.h>
+#include <CGAL/Shape_analysis/internal/Random.h>
+#include <CGAL/Shape_analysis/internal/Similarity_alignment.h>
+
+#include <CGAL/Aff_transformation_3.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Randomized_cuts {
+
+/*!
+\ingroup PkgRandomizedCutsRef
+
+The outcome of `register_meshes()`: the similarity transform that maps the source mesh onto the
+target mesh, and how well it fits.
+
+\tparam Kernel the \cgal kernel of the meshes' points
+*/
+template <typename Kernel>
+struct Registration_result
+{
+  /// The similarity transform \f$x \mapsto sRx + t\f$ (rotation \f$R\f$, uniform scale \f$s\f$,
+  /// translation \f$t\f$) that maps the points of the source mesh onto the target mesh.
+  CGAL::Aff_transformation_3<Kernel> transformation;
+  /// The rotation \f$R\f$, row by row (a proper rotation: orthonormal, determinant +1).
+  std::array<std::array<double, 3>, 3> rotation{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  /// The uniform scale \f$s > 0\f$.
+  double scale = 1;
+  /// The translation \f$t\f$.
+  std::array<double, 3> translation{{0, 0, 0}};
+  /// The trimmed, symmetric RMS distance after alignment, in the target's units: the distance of
+  /// every sample point of the transformed source to the target surface and of every target sample
+  /// point to the transformed source surface; the smallest `overlap` fraction of the distances of
+  /// each direction is kept. 0 for an exact copy; about the noise level for a noisy copy.
+  double rms_distance = 0;
+  /// The same distance for the identity transform (the meshes as given), for comparison.
+  double initial_rms_distance = 0;
+  /// The number of restarts tried (24: every proper mapping of the source's principal axes onto
+  /// the target's principal axes).
+  std::size_t number_of_restarts = 0;
+  /// The index, in `[0, number_of_restarts)`, of the restart that gave the result (0: the
+  /// principal axes mapped onto each other in order, with their signs as computed).
+  std::size_t best_restart = 0;
+  /// The number of ICP iterations of the best restart, every stage.
+  std::size_t number_of_iterations = 0;
+  /// Whether the last ICP stage stopped because the RMS distance no longer decreased (rather than
+  /// after its largest number of iterations).
+  bool converged = false;
+  /// The number of sample points on each mesh.
+  std::size_t number_of_points = 0;
+};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+namespace SAI = CGAL::Shape_analysis::internal;
+
+// The triangles of a mesh as plain points, in the order of faces(tm), with an emphasis per
+// triangle (1 each unless partition values are given).
+struct Surface_triangles
+{
+  std::vector<std::array<SAI::Vector_3d, 3>> corners;
+  std::vector<double> areas;
+  std::vector<double> emphasis;
+  double total_area = 0;
+};
+
+// Sampling weights are area * (floor + face value / mean face value): `floor` keeps a share of
+// the samples spread uniformly, so that regions without part boundaries are still represented.
+constexpr double partition_weight_floor = 0.5;
+
+template <typename TriangleMesh, typename VertexPointMap, typename ToVector, typename EdgeValue>
+Surface_triangles surface_triangles(const TriangleMesh& tm, VertexPointMap vpm,
+                                    const ToVector& to_vector, const EdgeValue* edge_value)
+{
+  Surface_triangles s;
+  const std::size_t n = num_faces(tm);
+  s.corners.reserve(n);
+  s.areas.reserve(n);
+  std::vector<double> face_value;
+  face_value.reserve(n);
+  for(auto f : faces(tm)) {
+    std::array<SAI::Vector_3d, 3> c;
+    double value = 0;
+    int i = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+      c[std::size_t(i++)] = to_vector(get(vpm, target(h, tm)));
+      if(edge_value != nullptr)
+        value += edge_value->at(edge(h, tm));
+    }
+    const double area = 0.5 * SAI::cross(c[1] - c[0], c[2] - c[0]).length();
+    s.corners.push_back(c);
+    s.areas.push_back(std::isfinite(area) ? area : 0.0);
+    face_value.push_back(value / 3.0);
+    s.total_area += s.areas.back();
+  }
+  double mean = 0;
+  for(std::size_t f = 0; f < n; ++f)
+    mean += s.areas[f] * face_value[f];
+  mean = s.total_area > 0 ? mean / s.total_area : 0.0;
+  s.emphasis.assign(n, 1.0);
+  if(edge_value != nullptr && mean > 0)
+    for(std::size_t f = 0; f < n; ++f)
+      s.emphasis[f] = partition_weight_floor + face_value[f] / mean;
+  return s;
+}
+
+// `n` points drawn independently on the triangles, each triangle with probability proportional to
+// its area times its emphasis, uniformly inside it.
+inline std::vector<SAI::Vector_3d> sample_triangles(const Surface_triangles& s, std::size_t n,
+                                                    SAI::Random_stream& rng)
+{
+  std::vector<double> cumulative(s.areas.size());
+  double total = 0;
+  for(std::size_t f = 0; f < s.areas.size(); ++f) {
+    total += s.areas[f] * s.emphasis[f];
+    cumulative[f] = total;
+  }
+  std::vector<SAI::Vector_3d> points;
+  points.reserve(n);
+  for(std::size_t i = 0; i < n; ++i) {
+    const double u = rng.uniform() * total;
+    std::size_t f = std::size_t(std::upper_bound(cumulative.begin(), cumulative.end(), u) -
+                                cumulative.begin());
+    f = (std::min)(f, cumulative.size() - 1);
+    while(f > 0 && s.areas[f] == 0) // never a zero-area triangle
+      --f;
+    const double r1 = std::sqrt(rng.uniform()), r2 = rng.uniform();
+    const auto& c = s.corners[f];
+    points.push_back(c[0] * (1 - r1) + c[1] * (r1 * (1 - r2)) + c[2] * (r1 * r2));
+  }
+  return points;
+}
+
+// Checks a mesh for registration and returns its triangles (with partition emphasis when
+// `partition_np` is not null).
+template <typename TriangleMesh, typename MeshNP, typename PartitionNP>
+Surface_triangles registration_triangles(const TriangleMesh& tm, const MeshNP& mesh_np,
+                                         const PartitionNP* partition_np, const std::string& who)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  auto vpm = choose_parameter(get_parameter(mesh_np, CGAL::internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, tm));
+  typedef typename CGAL::GetGeomTraits<TriangleMesh, MeshNP>::type Geom_traits;
+  const SAI::Point_to_vector<Geom_traits> to_vector{
+    choose_parameter<Geom_traits>(get_parameter(mesh_np, CGAL::internal_np::geom_traits))};
+  SAI::check_triangle_mesh(tm, vpm, to_vector, who);
+  std::map<edge_descriptor, double> values;
+  if(partition_np != nullptr) {
+    try {
+      partition_function(tm, boost::associative_property_map<std::map<edge_descriptor, double>>(values),
+                         *partition_np);
+    } catch(const Bad_input& e) {
+      throw Bad_input(who + ": " + e.what());
+    }
+  }
+  const Surface_triangles s =
+    surface_triangles(tm, vpm, to_vector, partition_np != nullptr ? &values : nullptr);
+  if(!(s.total_area > 0) || !std::isfinite(s.total_area))
+    throw Bad_input(who + ": the mesh has no area");
+  return s;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgRandomizedCutsRef
+
+Registers two triangle meshes: finds the similarity transform (rotation, uniform scale and
+translation) that best maps the surface of `source` onto the surface of `target`, with points
+sampled preferably along part boundaries (\cgalCite{Golovinskiy2010}, registration with the
+partition function).
+
+1. The partition function of each mesh is computed (see `partition_function()`; its named
+   parameters are passed on, with `number_of_samples` defaulting to 100 here).
+2. `number_of_points` points are sampled on each surface, each face with a probability
+   proportional to its area times \f$(0.5 + v_f/\bar v)\f$, where \f$v_f\f$ is the mean partition
+   function value of the face's three edges and \f$\bar v\f$ the area-weighted mean of \f$v_f\f$ over
+   the mesh: part boundaries (necks, creases) get more samples than part interiors, while a third of
+   the sampling mass stays spread uniformly. With `partition_weighting(false)`, the samples are
+   uniform by area and no partition function is computed.
+3. The centroids of the two point samples are matched, and their scales by their root mean square
+   distances to the centroid; the source's principal axes are mapped onto the target's in each of
+   the 24 proper ways (axis permutations and sign changes of determinant +1): 24 restarts.
+4. From each restart, ICP with scale: every transformed source point is paired with its closest
+   target point and every target point with its closest transformed source point; in each
+   direction the closest `overlap` fraction of the pairs is kept; the best similarity of the kept
+   pairs (closed form, least squares) is the next transform; until the trimmed RMS distance
+   decreases by less than \f$10^{-5}\f$ of itself, or `number_of_iterations` iterations. All 24
+   restarts first run at most 20 iterations on the first 400 points of each sample; the 3 best then
+   continue with every point.
+5. The restart with the smallest trimmed symmetric RMS distance wins (ties: the smaller index).
+6. It is finished by at most 20 ICP iterations where the sample points are paired with the
+   closest points of the other surface (AABB trees) rather than with the other sample's points, and
+   each step minimizes the distances to the tangent planes at those points (a Gauss-Newton step on
+   rotation, scale and translation): this removes the sampling noise from the transform (an exact
+   copy is recovered to rounding error) and converges in a few iterations. `rms_distance` is
+   measured between sample points and surfaces in the same way.
+
+Sampling draws from random streams derived from `random_seed`, and the restarts are independent:
+the result is the same for any number of threads.
+
+\tparam TriangleMesh a model of `FaceListGraph` and `EdgeListGraph` (for example
+        `CGAL::Surface_mesh` or `CGAL::Polyhedron_3`)
+\tparam NamedParameters1 a sequence of named parameters
+\tparam NamedParameters2 a sequence of named parameters
+
+\param source the mesh to move: non-empty, triangles only, finite coordinates, positive area
+       (at least two faces with partition weighting)
+\param target the mesh to move onto (same requirements)
+\param np_source an optional sequence of named parameters among the ones listed below: the
+       parameters of the registration, those of `partition_function()` (used for both meshes), and
+       the `vertex_point_map`, `geom_traits` and `face_index_map` of `source`
+\param np_target an optional sequence of named parameters: the `vertex_point_map`,
+       `geom_traits` and `face_index_map` of `target` (other parameters are read from
+       `np_source` only)
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{number_of_points}
+    \cgalParamDescription{the number of points sampled on each mesh}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`2000`}
+    \cgalParamExtra{must be at least 10}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_iterations}
+    \cgalParamDescription{the largest number of ICP iterations of a restart between all sample
+      points (step 4; 0: the initial alignments of the principal frames only)}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`50`}
+  \cgalParamNEnd
+  \cgalParamNBegin{overlap}
+    \cgalParamDescription{the fraction of the closest-point pairs of each direction kept by ICP and
+      by the RMS distance (the worst pairs are treated as outliers); 1 keeps every pair}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0.9`}
+    \cgalParamExtra{must be in \f$(0, 1]\f$}
+  \cgalParamNEnd
+  \cgalParamNBegin{partition_weighting}
+    \cgalParamDescription{whether the sample points are concentrated on part boundaries with the
+      partition function; otherwise they are uniform by area (and no partition function is
+      computed)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_samples}
+    \cgalParamDescription{the number of segmentations sampled for each partition function}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`100`}
+  \cgalParamNEnd
+  \cgalParamNBegin{random_seed}
+    \cgalParamDescription{the seed of the random numbers (partition functions and point samples)}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{`0`}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the largest number of threads used (with TBB); 0 for all cores. The
+      result does not depend on it}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`0`}
+  \cgalParamNEnd
+  \cgalParamNBegin{progress_callback}
+    \cgalParamDescription{called with the fraction of the work done, in \f$[0, 1]\f$: during the
+      partition functions (up to 0.8), then after the restarts and after the refinement}
+    \cgalParamType{a callable convertible to `std::function<void(double)>`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
+  \cgalParamNBegin{sampling_method / part_size / number_of_clusters / randomness / convergence_tolerance / score_weighting / concavity_exponent / component_link_distance / component_link_factor}
+    \cgalParamDescription{passed on to `partition_function()` for both meshes}
+    \cgalParamType{see `partition_function()`}
+    \cgalParamDefault{see `partition_function()`}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of the mesh}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `vertex_descriptor` as key and
+      a point type of a CGAL kernel as value}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class, used to read the coordinates
+      (the kernel of `np_source`'s is that of the result)}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_index_map}
+    \cgalParamDescription{a property map associating to each face of the mesh a unique index}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `face_descriptor` as key and
+      `std::size_t` as value}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the transform, its scale, the trimmed RMS distance before and after, and which restart
+         won
+
+\throws CGAL::Shape_analysis::Bad_input if a mesh has no faces, a face that is not a triangle, a
+        coordinate that is not finite or no area (the message says which mesh), if the partition
+        function refuses a mesh or a parameter (see `partition_function()`), if
+        `number_of_points` is less than 10 or if `overlap` is not in \f$(0, 1]\f$.
+
+\sa `partition_function()`
+*/
+template <typename TriangleMesh,
+          typename NamedParameters1 = parameters::Default_named_parameters,
+          typename NamedParameters2 = parameters::Default_named_parameters>
+Registration_result<typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters1>::type>
+register_meshes(const TriangleMesh& source, const TriangleMesh& target,
+                const NamedParameters1& np_source = parameters::default_values(),
+                const NamedParameters2& np_target = parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  namespace SAI = CGAL::Shape_analysis::internal;
+  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters1>::type Kernel;
+  typedef typename Kernel::FT FT;
+  const std::string who = "register_meshes";
+
+  const std::size_t n_points =
+    SAI::parameter_value<std::size_t>(np_source, snp::number_of_points_tag, std::size_t(2000));
+  const std::size_t iterations = SAI::parameter_value<std::size_t>(
+    np_source, CGAL::internal_np::number_of_iterations, std::size_t(50));
+  const double overlap =
+    SAI::parameter_value<double>(np_source, CGAL::internal_np::overlap, 0.9);
+  const bool weighting = SAI::parameter_value<bool>(np_source, snp::partition_weighting_tag, true);
+  const std::uint64_t seed = SAI::parameter_value<std::uint64_t>(
+    np_source, CGAL::internal_np::random_seed, std::uint64_t(0));
+  const std::size_t threads =
+    SAI::parameter_value<std::size_t>(np_source, snp::number_of_threads_tag, std::size_t(0));
+  const std::size_t pf_samples = SAI::parameter_value<std::size_t>(
+    np_source, CGAL::internal_np::number_of_samples, std::size_t(100));
+  const std::function<void(double)> progress = SAI::parameter_value<std::function<void(double)>>(
+    np_source, snp::progress_callback_tag, std::function<void(double)>());
+  if(n_points < 10)
+    throw Bad_input(who + ": number_of_points must be at least 10");
+  if(n_points > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
+    throw Bad_input(who + ": number_of_points is too large");
+  if(!(overlap > 0 && overlap <= 1))
+    throw Bad_input(who + ": overlap must be in (0, 1]");
+
+  const auto report = [&](double offset, double span) {
+    return progress ? std::function<void(double)>([progress, offset, span](double f) {
+                        progress(offset + span * f);
+                      })
+                    : std::function<void(double)>();
+  };
+
+  // The target's maps replace the source's in the target's partition-function parameters.
+  auto target_vpm = choose_parameter(get_parameter(np_target, CGAL::internal_np::vertex_point),
+                                     get_const_property_map(CGAL::vertex_point, target));
+  auto target_fim = CGAL::get_initialized_face_index_map(target, np_target);
+  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters2>::type Target_traits;
+  const Target_traits target_traits =
+    choose_parameter<Target_traits>(get_parameter(np_target, CGAL::internal_np::geom_traits));
+  const auto source_np = parameters::extend(np_source)
+                           .number_of_samples(pf_samples)
+                           .progress_callback(report(0.0, 0.4));
+  const auto target_np = parameters::extend(np_source)
+                           .vertex_point_map(target_vpm)
+                           .face_index_map(target_fim)
+                           .geom_traits(target_traits)
+                           .number_of_samples(pf_samples)
+                           .progress_callback(report(0.4, 0.4));
+
+  const internal::Surface_triangles source_triangles = internal::registration_triangles(
+    source, np_source, weighting ? &source_np : nullptr, who + " (source mesh)");
+  const internal::Surface_triangles target_triangles = internal::registration_triangles(
+    target, np_target, weighting ? &target_np : nullptr, who + " (target mesh)");
+
+  // Two streams of their own, apart from the partition function's (seed, sample) streams.
+  const std::uint64_t sampling_seed = SAI::Random_stream::mix(seed ^ 0x52656769737465ull);
+  SAI::Random_stream source_rng(sampling_seed, 0), target_rng(sampling_seed, 1);
+  const std::vector<SAI::Vector_3d> source_points =
+    internal::sample_triangles(source_triangles, n_points, source_rng);
+  const std::vector<SAI::Vector_3d> target_points =
+    internal::sample_triangles(target_triangles, n_points, target_rng);
+
+  SAI::Restart_alignment_options o;
+  o.icp.max_iterations = iterations;
+  o.icp.keep_fraction = overlap;
+  o.number_of_threads = threads;
+  const double alignment_start = weighting ? 0.8 : 0.0;
+  if(progress)
+    progress(alignment_start);
+  const SAI::Closest_surface_point source_surface(source_triangles.corners),
+    target_surface(target_triangles.corners);
+  const SAI::Restart_alignment_result a =
+    SAI::align_with_restarts(source_points, target_points, o, &source_surface, &target_surface);
+  if(progress)
+    progress(1.0);
+
+  Registration_result<Kernel> r;
+  const SAI::Similarity_3d& t = a.transform;
+  for(std::size_t i = 0; i < 3; ++i) {
+    for(int j = 0; j < 3; ++j)
+      r.rotation[i][std::size_t(j)] = t.rotation[i][j];
+    r.translation[i] = t.translation[int(i)];
+  }
+  const double s = t.scale;
+  r.transformation = CGAL::Aff_transformation_3<Kernel>(
+    FT(s * t.rotation[0].x), FT(s * t.rotation[0].y), FT(s * t.rotation[0].z), FT(t.translation.x),
+    FT(s * t.rotation[1].x), FT(s * t.rotation[1].y), FT(s * t.rotation[1].z), FT(t.translation.y),
+    FT(s * t.rotation[2].x), FT(s * t.rotation[2].y), FT(s * t.rotation[2].z), FT(t.translation.z),
+    FT(1));
+  r.scale = s;
+  r.rms_distance = a.rms;
+  r.initial_rms_distance = a.initial_rms;
+  r.number_of_restarts = a.number_of_restarts;
+  r.best_restart = a.best_restart;
+  r.number_of_iterations = a.iterations;
+  r.converged = a.converged;
+  r.number_of_points = n_points;
+  return r;
+}
+
+} // namespace Randomized_cuts
+} // namespace CGAL
+
+#endif // CGAL_RANDOMIZED_CUTS_REGISTER_MESHES_H

@@ -1,0 +1,372 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+// shape_analysis partition IN --method mincut|kmeans|hierarchical --samples N --seed S
+//     --part-size s --output OUT.ply --edge-values OUT.txt --report R.json
+// shape_analysis partition-segment IN --segments K --seg OUT.seg --output OUT.ply --report R.json
+
+#include "cli_common.h"
+
+#include <CGAL/Randomized_cuts/partition_function.h>
+#include <CGAL/Randomized_cuts/segment_with_partition_function.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+namespace shape_analysis_cli {
+
+namespace {
+
+namespace RC = CGAL::Randomized_cuts;
+
+// What both subcommands sample with.
+struct Sampling_options
+{
+  std::string method = "mincut";
+  std::size_t samples = 400;
+  unsigned int seed = 0;
+  double part_size = 0.05;
+  std::size_t clusters = 10;
+  double randomness = 0.02;
+  double tolerance = 0;
+  bool score_weighting = false;
+  std::size_t threads = 0;
+  double concavity_exponent = 10;
+  bool quiet = false;
+  bool verbose = false;
+};
+
+struct Partition_options : Sampling_options
+{
+  std::string input, output_ply, edge_values, report;
+};
+
+struct Partition_segment_options : Sampling_options
+{
+  std::string input, output_ply, output_seg, report;
+  std::size_t segments = 8;
+  bool no_refinement = false;
+};
+
+RC::Sampling_method method_of(const std::string& name)
+{
+  if(name == "mincut")
+    return RC::MIN_CUT;
+  if(name == "kmeans")
+    return RC::K_MEANS;
+  return RC::HIERARCHICAL;
+}
+
+void add_sampling_options(CLI::App* cmd, Sampling_options& o, bool with_method)
+{
+  if(with_method)
+    cmd->add_option("--method", o.method, "Sampler: mincut, kmeans or hierarchical")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"mincut", "kmeans", "hierarchical"}));
+  cmd->add_option("-n,--samples", o.samples, "Number of sampled segmentations")
+    ->capture_default_str()
+    ->check(CLI::PositiveNumber);
+  cmd->add_option("--seed", o.seed, "Random seed (same seed, same result)")->capture_default_str();
+  cmd->add_option("--part-size", o.part_size,
+                  "mincut: part size s of the penalty near the two sampled faces, in (0, 1/6]")
+    ->capture_default_str();
+  if(with_method) {
+    cmd->add_option("--clusters", o.clusters,
+                    "kmeans: number of seeds; hierarchical: largest number of segments")
+      ->capture_default_str();
+    cmd->add_option("--randomness", o.randomness, "hierarchical: randomness r of the merges")
+      ->capture_default_str();
+  }
+  cmd->add_option("--tolerance", o.tolerance,
+                  "Stop when no edge value changes by more than this over a batch of 64 samples (0: off)")
+    ->capture_default_str();
+  cmd->add_flag("--score-weighting", o.score_weighting,
+                "Weight each sample by 1 / its normalized cut (clean cuts count more)");
+  cmd->add_option("--threads", o.threads, "Threads (0: all cores); the result does not depend on it")
+    ->capture_default_str();
+  cmd->add_option("--concavity-exponent", o.concavity_exponent,
+                  "Exponent alpha of the concavity weight min((theta/pi)^alpha, 1)")
+    ->capture_default_str();
+  cmd->add_flag("-q,--quiet", o.quiet, "No progress on stderr");
+  cmd->add_flag("-v,--verbose", o.verbose, "Progress on stderr even when it is not a terminal");
+}
+
+Json sampling_json(const Sampling_options& o, bool with_method)
+{
+  Json p = Json::object();
+  if(with_method)
+    p["method"] = o.method;
+  p["samples"] = o.samples;
+  p["seed"] = o.seed;
+  p["part_size"] = o.part_size;
+  if(with_method) {
+    p["clusters"] = o.clusters;
+    p["randomness"] = o.randomness;
+  }
+  p["tolerance"] = o.tolerance;
+  p["score_weighting"] = o.score_weighting;
+  p["threads"] = o.threads;
+  p["concavity_exponent"] = o.concavity_exponent;
+  return p;
+}
+
+// Light grey (value 0) through yellow and orange to dark red (value 1).
+std::array<unsigned char, 3> ramp(double t)
+{
+  t = std::clamp(t, 0.0, 1.0);
+  static const double stops[4][3] = {{235, 235, 230}, {250, 215, 80}, {235, 110, 30}, {150, 0, 20}};
+  const double x = t * 3.0;
+  const int i = (std::min)(2, static_cast<int>(x));
+  const double f = x - i;
+  std::array<unsigned char, 3> c;
+  for(int k = 0; k < 3; ++k)
+    c[std::size_t(k)] = static_cast<unsigned char>(std::lround(stops[i][k] + f * (stops[i + 1][k] - stops[i][k])));
+  return c;
+}
+
+template <typename T>
+void put_binary(std::ostream& out, T value)
+{
+  out.write(reinterpret_cast<const char*>(&value), sizeof(T)); // little-endian hosts
+}
+
+// Binary PLY: the input's points with a colour (ramp of the vertex value divided by the largest
+// edge value) and a `quality` scalar (the largest value of the vertex's edges); its faces in
+// the input order; an `edge` element with each surface edge's two vertices and `value`.
+void write_partition_ply(std::ostream& out, const Input_mesh& input,
+                         const std::vector<std::array<std::size_t, 2>>& edge_points,
+                         const std::vector<double>& edge_value)
+{
+  const std::size_t np = input.points.size();
+  std::vector<double> vertex_value(np, 0.0);
+  double largest = 0;
+  for(std::size_t e = 0; e < edge_points.size(); ++e) {
+    for(std::size_t p : edge_points[e])
+      vertex_value[p] = (std::max)(vertex_value[p], edge_value[e]);
+    largest = (std::max)(largest, edge_value[e]);
+  }
+  out << "ply\nformat binary_little_endian 1.0\n"
+      << "comment written by shape_analysis partition (CGAL Global Shape Analysis)\n"
+      << "comment vertex quality: largest partition-function value of the vertex's edges\n"
+      << "comment colours: the quality divided by the largest edge value (" << largest << ")\n"
+      << "element vertex " << np << "\n"
+      << "property double x\nproperty double y\nproperty double z\n"
+      << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+      << "property float quality\n"
+      << "element face " << input.triangles.size() << "\n"
+      << "property list uchar int vertex_indices\n"
+      << "element edge " << edge_points.size() << "\n"
+      << "property int vertex1\nproperty int vertex2\nproperty float value\n"
+      << "end_header\n";
+  for(std::size_t p = 0; p < np; ++p) {
+    put_binary(out, CGAL::to_double(input.points[p].x()));
+    put_binary(out, CGAL::to_double(input.points[p].y()));
+    put_binary(out, CGAL::to_double(input.points[p].z()));
+    const auto c = ramp(largest > 0 ? vertex_value[p] / largest : 0.0);
+    out.write(reinterpret_cast<const char*>(c.data()), 3);
+    put_binary(out, static_cast<float>(vertex_value[p]));
+  }
+  for(const auto& t : input.triangles) {
+    put_binary(out, static_cast<unsigned char>(3));
+    for(std::size_t v : t)
+      put_binary(out, static_cast<std::int32_t>(v));
+  }
+  for(std::size_t e = 0; e < edge_points.size(); ++e) {
+    put_binary(out, static_cast<std::int32_t>(edge_points[e][0]));
+    put_binary(out, static_cast<std::int32_t>(edge_points[e][1]));
+    put_binary(out, static_cast<float>(edge_value[e]));
+  }
+}
+
+int run_partition(const Partition_options& o)
+{
+  Stopwatch total;
+  Progress progress("partition", o.quiet, o.verbose);
+  Output_files outputs;
+  outputs.add_input(o.input);
+  outputs.add_optional_output(o.output_ply, "coloured mesh");
+  outputs.add_optional_output(o.edge_values, "edge values");
+  outputs.add_optional_output(o.report, "report");
+
+  double read_seconds = 0;
+  Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
+  Mesh& mesh = input.mesh;
+
+  progress.stage("sampling " + std::to_string(o.samples) + " " + o.method + " segmentations of " +
+                 std::to_string(num_faces(mesh)) + " faces");
+  std::vector<double> values(num_edges(mesh), 0.0);
+  std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
+  Stopwatch sampling;
+  const RC::Partition_function_result r = RC::partition_function(
+    mesh, CGAL::make_property_map(values),
+    RC::parameters::sampling_method(method_of(o.method))
+      .number_of_samples(o.samples)
+      .random_seed(o.seed)
+      .part_size(o.part_size)
+      .number_of_clusters(o.clusters)
+      .randomness(o.randomness)
+      .convergence_tolerance(o.tolerance)
+      .score_weighting(o.score_weighting)
+      .number_of_threads(o.threads)
+      .concavity_exponent(o.concavity_exponent)
+      .progress_callback(on_progress));
+  const double seconds = sampling.seconds();
+  progress.done();
+
+  // Edges by the input's points; values in the order of edges(mesh).
+  std::vector<std::array<std::size_t, 2>> edge_points;
+  std::vector<double> edge_value;
+  edge_points.reserve(num_edges(mesh));
+  double largest = 0, sum = 0;
+  for(Mesh::Edge_index e : edges(mesh)) {
+    const Mesh::Halfedge_index h = halfedge(e, mesh);
+    edge_points.push_back({input.vertex_point[source(h, mesh)], input.vertex_point[target(h, mesh)]});
+    edge_value.push_back(values[e]);
+    largest = (std::max)(largest, values[e]);
+    sum += values[e];
+  }
+
+  if(!o.output_ply.empty()) {
+    progress.stage("writing " + o.output_ply);
+    outputs.stage(o.output_ply, true,
+                  [&](std::ostream& out) { write_partition_ply(out, input, edge_points, edge_value); });
+  }
+  if(!o.edge_values.empty()) {
+    progress.stage("writing " + o.edge_values);
+    outputs.stage(o.edge_values, false, [&](std::ostream& out) {
+      // i j value, i < j the file's vertex indices, one line per edge of the surface, sorted.
+      std::vector<std::pair<std::array<std::size_t, 2>, double>> lines;
+      lines.reserve(edge_points.size());
+      for(std::size_t e = 0; e < edge_points.size(); ++e) {
+        std::size_t i = input.input_index[edge_points[e][0]], j = input.input_index[edge_points[e][1]];
+        if(i > j)
+          std::swap(i, j);
+        lines.push_back({{i, j}, edge_value[e]});
+      }
+      std::sort(lines.begin(), lines.end());
+      std::ostringstream buffer;
+      buffer << std::setprecision(9);
+      for(const auto& l : lines)
+        buffer << l.first[0] << ' ' << l.first[1] << ' ' << l.second << '\n';
+      out << buffer.str();
+    });
+  }
+  if(!o.report.empty()) {
+    Json report = input_report("partition", o.input, input);
+    report["edges"] = edge_points.size();
+    report["parameters"] = sampling_json(o, true);
+    report["samples_drawn"] = r.number_of_samples;
+    report["converged"] = r.converged;
+    report["largest_change"] = r.largest_change;
+    report["largest_value"] = largest;
+    report["mean_value"] = edge_points.empty() ? 0.0 : sum / double(edge_points.size());
+    report["seconds_per_sample"] = r.number_of_samples > 0 ? seconds / double(r.number_of_samples) : 0.0;
+    stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(),
+                 {{"mesh", o.output_ply}, {"edge_values", o.edge_values}});
+  }
+  outputs.commit();
+  std::cout << o.input << ": " << num_faces(mesh) << " faces, " << r.number_of_samples
+            << " samples in " << seconds << " s; largest edge value " << largest << "\n";
+  return 0;
+}
+
+int run_partition_segment(const Partition_segment_options& o)
+{
+  Stopwatch total;
+  Progress progress("partition-segment", o.quiet, o.verbose);
+  Output_files outputs;
+  outputs.add_input(o.input);
+  outputs.add_optional_output(o.output_ply, "coloured mesh");
+  outputs.add_optional_output(o.output_seg, "labels");
+  outputs.add_optional_output(o.report, "report");
+
+  double read_seconds = 0;
+  Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
+  Mesh& mesh = input.mesh;
+  const std::size_t n = input.number_of_input_faces();
+
+  progress.stage("segmenting " + std::to_string(num_faces(mesh)) + " faces into " +
+                 std::to_string(o.segments) + " segments with the partition function");
+  auto segment_map = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:segment", 0).first;
+  std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
+  Stopwatch segmenting;
+  const std::size_t k = RC::segment_with_partition_function(
+    mesh, segment_map,
+    RC::parameters::number_of_segments(o.segments)
+      .number_of_samples(o.samples)
+      .random_seed(o.seed)
+      .part_size(o.part_size)
+      .convergence_tolerance(o.tolerance)
+      .score_weighting(o.score_weighting)
+      .number_of_threads(o.threads)
+      .concavity_exponent(o.concavity_exponent)
+      .boundary_refinement(!o.no_refinement)
+      .progress_callback(on_progress));
+  const double seconds = segmenting.seconds();
+  progress.done();
+
+  const std::vector<std::size_t> labels = labels_per_input_face(input, segment_map);
+  std::vector<std::size_t> counts(k, 0);
+  for(std::size_t l : labels)
+    ++counts[l];
+  stage_segmentation(outputs, progress, input, labels, o.output_ply, o.output_seg);
+  if(!o.report.empty()) {
+    Json report = input_report("partition-segment", o.input, input);
+    report["segments"] = k;
+    Json parameters = sampling_json(o, false);
+    parameters["segments"] = o.segments;
+    parameters["boundary_refinement"] = !o.no_refinement;
+    report["parameters"] = parameters;
+    report["segment_faces"] = counts;
+    stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(),
+                 {{"mesh", o.output_ply}, {"labels", o.output_seg}});
+  }
+  outputs.commit();
+  std::cout << o.input << ": " << n << " faces, " << k << " segments in " << seconds << " s\n";
+  return 0;
+}
+
+} // namespace
+
+void add_partition_commands(CLI::App& app, std::function<int()>& run)
+{
+  {
+    auto o = std::make_shared<Partition_options>();
+    CLI::App* cmd = app.add_subcommand(
+      "partition",
+      "Partition function: how often random segmentations cut each edge (high on part boundaries).");
+    cmd->add_option("input", o->input, "Input triangle mesh (.off, .ply, .obj, .stl)")->required();
+    cmd->add_option("-o,--output", o->output_ply,
+                    "Coloured mesh (.ply: vertex colours and 'quality', edges with 'value')");
+    cmd->add_option("--edge-values", o->edge_values,
+                    "Text file, one line per edge: 'i j value', i < j the input's vertex indices");
+    cmd->add_option("--report", o->report, "JSON report (inputs, parameters, seconds, figures)");
+    add_sampling_options(cmd, *o, true);
+    cmd->callback([o, &run]() { run = [o]() { return run_partition(*o); }; });
+  }
+  {
+    auto o = std::make_shared<Partition_segment_options>();
+    CLI::App* cmd = app.add_subcommand(
+      "partition-segment",
+      "Segment a triangle mesh along its most consistent cuts (partition function, min-cut sampling).");
+    cmd->add_option("input", o->input, "Input triangle mesh (.off, .ply, .obj, .stl)")->required();
+    cmd->add_option("-k,--segments", o->segments, "Number of segments")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+    cmd->add_option("-o,--output", o->output_ply,
+                    "Coloured mesh (.ply, one colour and an integer 'segment' per face)");
+    cmd->add_option("--seg", o->output_seg,
+                    "Segment id per face, one per line, in the input's face order");
+    cmd->add_option("--report", o->report, "JSON report (inputs, parameters, seconds, figures)");
+    cmd->add_flag("--no-refinement", o->no_refinement, "Skip the final boundary refinement");
+    add_sampling_options(cmd, *o, false);
+    cmd->callback([o, &run]() { run = [o]() { return run_partition_segment(*o); }; });
+  }
+}
+
+} // namespace shape_analysis_cli
