@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# The main job on packaged data: segments meshes from Debian's libcgal-demo into parts and writes
-# coloured meshes (open them in MeshLab or CloudCompare), Princeton-benchmark label files and
-# JSON reports to build/demo/. Installs missing Debian packages and builds the tool first.
+# The main job on packaged data: segments meshes from Debian's libcgal-demo into parts, computes
+# the partition function of the camel and segments the elephant along its most consistent cuts;
+# writes coloured meshes (open them in MeshLab or CloudCompare), Princeton-benchmark label files,
+# edge values and JSON reports to build/demo/. Installs missing Debian packages and builds the
+# tool first.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
@@ -24,6 +26,14 @@ segment armadillo 12
 segment bear 8
 segment blobby_3cc 3
 
+# The partition function (Randomized_cuts): how often random cuts cross each edge, coloured from
+# light grey to dark red, and a segmentation along the most consistent cuts.
+"$tool" partition "$data/camel.off" --samples 400 --output "$out/camel_partition.ply" \
+  --edge-values "$out/camel_partition.txt" --report "$out/camel_partition.json" --verbose
+"$tool" partition-segment "$data/elephant.off" --segments 6 \
+  --output "$out/elephant_partition_segments.ply" --seg "$out/elephant_partition_segments.seg" \
+  --report "$out/elephant_partition_segments.json" --verbose
+
 echo
-echo "Coloured segmentations (per-face colours) in $out:"
+echo "Coloured segmentations (per-face colours) and partition functions (per-vertex colours) in $out:"
 ls -1 "$out"/*.ply

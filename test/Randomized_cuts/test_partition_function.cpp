@@ -316,13 +316,19 @@ TEST(PartitionFunction, MultiscaleValuesAreThoseOfEachPartSize)
   std::vector<std::vector<double>> multi(num_edges(m));
   RC::multiscale_partition_function(m, CGAL::make_property_map(multi),
                                     RC::parameters::part_sizes(sizes).number_of_samples(150).random_seed(5));
+  // Each part size's cut continues from the flow of the smaller part size (its penalties are
+  // larger): it is a minimum cut for its own capacities, the one a separate run finds, except
+  // where rounding decides between two cuts of the same cost.
   for(std::size_t k = 0; k < sizes.size(); ++k) {
     const std::vector<double> single =
       values_of(m, RC::parameters::part_size(sizes[k]).number_of_samples(150).random_seed(5));
+    std::size_t differ = 0;
     for(edge_descriptor e : edges(m)) {
       ASSERT_EQ(multi[e].size(), sizes.size());
-      ASSERT_EQ(multi[e][k], single[e]) << "part size " << sizes[k];
+      EXPECT_LE(std::abs(multi[e][k] - single[e]), 2.0 / 150 + 1e-12) << "part size " << sizes[k];
+      differ += multi[e][k] != single[e] ? 1 : 0;
     }
+    EXPECT_LE(differ, num_edges(m) / 100) << "part size " << sizes[k];
   }
   // Larger part sizes keep cuts away from the seeds: the small head and feet are cut less often
   // relative to the whole, and the values differ between scales.

@@ -1460,6 +1460,24 @@ TEST(MaxFlow, MatchesBruteForceOnRandomDirectedGraphs)
     EXPECT_TRUE(side[s]);
     EXPECT_FALSE(side[t]);
     EXPECT_EQ(g.cut(capacity, side), best) << "seed " << seed << ": the sides realize the minimum";
+
+    // Larger capacities: the flow continues from the last one and reaches the new maximum.
+    std::vector<double> larger(capacity);
+    for(double& c : larger)
+      c += rng.uniform() < 0.5 ? 0.0 : double(rng.index(4));
+    const double added = flow.solve_with_larger_capacities(capacity, larger, s, t, w);
+    double best_larger = std::numeric_limits<double>::infinity();
+    for(std::uint32_t mask = 0; mask < (1u << n); ++mask) {
+      if(!((mask >> s) & 1u) || ((mask >> t) & 1u))
+        continue;
+      for(std::size_t u = 0; u < n; ++u)
+        side[u] = (mask >> u) & 1u;
+      best_larger = (std::min)(best_larger, g.cut(larger, side));
+    }
+    ASSERT_EQ(value + added, best_larger) << "seed " << seed;
+    for(std::size_t u = 0; u < n; ++u)
+      side[u] = SAI::Bk_max_flow::is_source_side(w, u);
+    EXPECT_EQ(g.cut(larger, side), best_larger) << "seed " << seed;
   }
 }
 

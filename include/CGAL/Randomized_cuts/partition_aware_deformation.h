@@ -141,6 +141,11 @@ public:
 
   /// Weights following the values of `values`, with the flexible weight \f$f\f$, the stiffness
   /// exponent \f$\gamma\f$, the value scale \f$\sigma\f$ and \f$k\f$ spread rings.
+  /// \param values the partition function of the edges
+  /// \param flexible_weight the stiffness factor \f$f\f$ of an edge on a part boundary
+  /// \param stiffness_exponent the exponent \f$\gamma\f$
+  /// \param value_scale the value scale \f$\sigma\f$
+  /// \param spread_rings the number of rings \f$k\f$ the values are spread over
   /// \pre `0 < flexible_weight <= 1`, `stiffness_exponent > 0`, `value_scale > 0`,
   ///      `spread_rings <= maximum_spread_rings`
   explicit Partition_aware_cotangent_weight(EdgeValueMap values, double flexible_weight = 0.01,
@@ -154,6 +159,9 @@ public:
 
   /// The spread and scaled value \f$\bar v(e) \in [0, 1]\f$ of the edge of `h` (0 without
   /// values).
+  /// \param h a halfedge of `tm`
+  /// \param tm the mesh
+  /// \returns \f$\bar v(e)\f$
   double spread_value(halfedge_descriptor h, const TriangleMesh& tm) const
   {
     if(!m_has_values)
@@ -166,6 +174,9 @@ public:
   }
 
   /// The stiffness factor \f$s(e) \in [f, 1]\f$ of the edge of `h`.
+  /// \param h a halfedge of `tm`
+  /// \param tm the mesh
+  /// \returns \f$s(e)\f$
   double stiffness(halfedge_descriptor h, const TriangleMesh& tm) const
   {
     if(!m_has_values)
@@ -175,6 +186,10 @@ public:
   }
 
   /// The positive cotangent weight \f$c(e)\f$ of the edge of `h`, with the points of `vpm`.
+  /// \param h a halfedge of `tm`
+  /// \param tm the mesh
+  /// \param vpm the points of the vertices of `tm`
+  /// \returns \f$c(e)\f$
   template <typename VertexPointMap>
   static double cotangent_weight(halfedge_descriptor h, const TriangleMesh& tm, VertexPointMap vpm)
   {
@@ -191,6 +206,10 @@ public:
   }
 
   /// The weight \f$w(h) = c(e)\,s(e)\f$, as `CGAL::Surface_mesh_deformation` calls it.
+  /// \param h a halfedge of `tm`
+  /// \param tm the mesh
+  /// \param vpm the points of the vertices of `tm`
+  /// \returns \f$w(h)\f$
   template <typename VertexPointMap>
   double operator()(halfedge_descriptor h, const TriangleMesh& tm, VertexPointMap vpm) const
   {

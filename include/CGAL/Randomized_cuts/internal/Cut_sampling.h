@@ -221,8 +221,13 @@ public:
   };
 
   Min_cut_sampler(const Dual_graph& g, const Sampling_options& o)
-    : m_g(g), m_o(o), m_cut(g), m_area(g)
-  {}
+    : m_g(g), m_o(o), m_cut(g), m_area(g), m_order(o.part_sizes.size())
+  {
+    std::iota(m_order.begin(), m_order.end(), std::size_t(0));
+    std::stable_sort(m_order.begin(), m_order.end(), [&](std::size_t x, std::size_t y) {
+      return o.part_sizes[x] < o.part_sizes[y];
+    });
+  }
 
   void draw(std::size_t index, Workspace& w, Sample& out) const
   {
@@ -246,11 +251,17 @@ public:
     out.scales.resize(m_o.part_sizes.size());
     w.capacity.resize(m);
     w.side.resize(g.number_of_nodes());
-    for(std::size_t k = 0; k < m_o.part_sizes.size(); ++k) {
+    // Part sizes in increasing order: the penalty only grows with the part size, so each cut
+    // continues from the flow of the previous one.
+    for(std::size_t rank = 0; rank < m_order.size(); ++rank) {
+      const std::size_t k = m_order[rank];
       const double s = m_o.part_sizes[k];
       for(std::size_t e = 0; e < m; ++e)
         w.capacity[e] = g.cut_cost[e] * seed_distance_penalty(w.relative[e], s);
-      m_cut.solve(w.capacity, a, b, w.flow);
+      if(rank == 0)
+        m_cut.solve(w.capacity, a, b, w.flow);
+      else
+        m_cut.solve_with_larger_capacities(w.capacity, a, b, w.flow);
       for(std::size_t i = 0; i < g.number_of_nodes(); ++i)
         w.side[i] = SAI::Dual_graph_min_cut::is_source_side(w.flow, i) ? 0 : 1;
       Sampled_cut& c = out.scales[k];
@@ -265,6 +276,7 @@ private:
   const Sampling_options& m_o;
   SAI::Dual_graph_min_cut m_cut;
   Area_sampler m_area;
+  std::vector<std::size_t> m_order; // part sizes, smallest first
 };
 
 // ---------------------------------------------------------------------------------------------

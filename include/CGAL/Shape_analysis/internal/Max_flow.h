@@ -53,11 +53,34 @@ public:
   // the source can still reach in the residual graph).
   double solve(const std::vector<double>& capacity, Index source, Index sink, Workspace& w) const
   {
+    w.residual.assign(capacity.begin(), capacity.end());
+    return augment_to_maximum(source, sink, w);
+  }
+
+  // The maximum flow between the same `source` and `sink` as the last solve with `w`, after the
+  // capacities grew from `old_capacity` (those of that solve) to `new_capacity` (no arc's
+  // capacity may decrease): the flow found then stays feasible and is only augmented further.
+  // Returns the flow added.
+  double solve_with_larger_capacities(const std::vector<double>& old_capacity,
+                                      const std::vector<double>& new_capacity, Index source,
+                                      Index sink, Workspace& w) const
+  {
+    for(std::size_t a = 0; a < w.residual.size(); ++a)
+      w.residual[a] += new_capacity[a] - old_capacity[a];
+    return augment_to_maximum(source, sink, w);
+  }
+
+  static bool is_source_side(const Workspace& w, std::size_t u) { return w.tree[u] == SOURCE_TREE; }
+
+private:
+  // Augments the flow whose residual capacities are in `w.residual` to a maximum one; returns
+  // the flow added.
+  double augment_to_maximum(Index source, Index sink, Workspace& w) const
+  {
     const std::size_t n = number_of_nodes();
     const std::vector<std::size_t>& first = *m_first;
     const std::vector<Index>& target = *m_target;
     const std::vector<Index>& reverse = *m_reverse;
-    w.residual.assign(capacity.begin(), capacity.end());
     w.tree.assign(n, FREE);
     w.parent.assign(n, none);
     w.distance.assign(n, 0);
@@ -170,9 +193,6 @@ public:
     return flow;
   }
 
-  static bool is_source_side(const Workspace& w, std::size_t u) { return w.tree[u] == SOURCE_TREE; }
-
-private:
   static constexpr Index none = ~Index(0);
   static constexpr Index terminal = ~Index(0) - 1;
   static constexpr Index orphan = ~Index(0) - 2;

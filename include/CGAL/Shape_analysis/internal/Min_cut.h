@@ -214,7 +214,7 @@ class Dual_graph_min_cut
 public:
   struct Workspace
   {
-    std::vector<double> capacity;
+    std::vector<double> capacity, previous_capacity; // per arc
     Bk_max_flow::Workspace flow;
   };
 
@@ -246,12 +246,22 @@ public:
   double solve(const std::vector<double>& edge_capacity, std::size_t source, std::size_t sink,
                Workspace& w) const
   {
-    const std::size_t arcs = m_g.arc_edge.size();
-    w.capacity.resize(arcs);
-    for(std::size_t a = 0; a < arcs; ++a)
-      w.capacity[a] = edge_capacity[m_g.arc_edge[a]];
+    fill_arc_capacities(edge_capacity, w.capacity);
     return m_flow.solve(w.capacity, static_cast<std::uint32_t>(source),
                         static_cast<std::uint32_t>(sink), w.flow);
+  }
+
+  // The same cut after the capacities grew (no edge's capacity lower than in the last solve with
+  // `w`, same source and sink): the last flow is augmented further instead of starting again.
+  // Returns the flow added.
+  double solve_with_larger_capacities(const std::vector<double>& edge_capacity, std::size_t source,
+                                      std::size_t sink, Workspace& w) const
+  {
+    w.previous_capacity.swap(w.capacity);
+    fill_arc_capacities(edge_capacity, w.capacity);
+    return m_flow.solve_with_larger_capacities(w.previous_capacity, w.capacity,
+                                               static_cast<std::uint32_t>(source),
+                                               static_cast<std::uint32_t>(sink), w.flow);
   }
 
   // After solve() with `w`: whether node u is on the source side of the cut.
@@ -261,6 +271,13 @@ public:
   }
 
 private:
+  void fill_arc_capacities(const std::vector<double>& edge_capacity, std::vector<double>& arc) const
+  {
+    arc.resize(m_g.arc_edge.size());
+    for(std::size_t a = 0; a < arc.size(); ++a)
+      arc[a] = edge_capacity[m_g.arc_edge[a]];
+  }
+
   static constexpr std::uint32_t no_arc = ~std::uint32_t(0);
   const Dual_graph& m_g;
   std::vector<std::uint32_t> m_reverse;
