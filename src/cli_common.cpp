@@ -60,6 +60,11 @@ Input_mesh read_triangle_mesh(const std::string& path)
   if(polygons.empty())
     throw Cli_error("'" + path + "' has no faces");
   const std::vector<Point_3>& points = result.points;
+  // Every point, used or not, must be finite (points are sorted and merged by position below).
+  for(std::size_t v = 0; v < points.size(); ++v)
+    if(!std::isfinite(points[v].x()) || !std::isfinite(points[v].y()) || !std::isfinite(points[v].z()))
+      throw Cli_error("'" + path + "': vertex " + std::to_string(v) +
+                      " has a coordinate that is not a finite number");
   for(std::size_t i = 0; i < polygons.size(); ++i) {
     const auto& p = polygons[i];
     if(p.size() != 3)
@@ -70,9 +75,6 @@ Input_mesh read_triangle_mesh(const std::string& path)
       if(v >= points.size())
         throw Cli_error("'" + path + "': face " + std::to_string(i) + " refers to vertex " +
                         std::to_string(v) + ", which does not exist");
-      if(!std::isfinite(points[v].x()) || !std::isfinite(points[v].y()) || !std::isfinite(points[v].z()))
-        throw Cli_error("'" + path + "': vertex " + std::to_string(v) +
-                        " has a coordinate that is not a finite number");
     }
   }
 

@@ -251,8 +251,13 @@ int run_partition(const Partition_options& o)
       std::sort(lines.begin(), lines.end());
       std::ostringstream buffer;
       buffer << std::setprecision(9);
-      for(const auto& l : lines)
-        buffer << l.first[0] << ' ' << l.first[1] << ' ' << l.second << '\n';
+      for(std::size_t k = 0; k < lines.size(); ++k) {
+        // A non-manifold edge of the file, split into several edges of the surface: one line,
+        // with the largest of their values (the last after sorting).
+        if(k + 1 < lines.size() && lines[k + 1].first == lines[k].first)
+          continue;
+        buffer << lines[k].first[0] << ' ' << lines[k].first[1] << ' ' << lines[k].second << '\n';
+      }
       out << buffer.str();
     });
   }

@@ -420,8 +420,69 @@ TEST(PartitionFunction, SeparatePiecesAreCutApartAndPolyhedronWorks)
   EXPECT_EQ(SAI::rand_index(labels, lm.labels), 1.0) << "each box is one segment";
 }
 
+TEST(PartitionFunction, ExtremeCoordinatesGiveTheSameValues)
+{
+  // Coordinates scaled by 2^500 and 2^-500 (an exact scaling): squared lengths and areas would
+  // overflow or underflow; the values must be those of the mesh as it is.
+  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(dumbbell(), 0.4);
+  const Mesh m = to_mesh(lm);
+  const auto np = RC::parameters::number_of_samples(64).random_seed(2);
+  const std::vector<double> reference = values_of(m, np);
+  for(int exponent : {500, -500}) {
+    Mesh scaled = m;
+    for(auto v : vertices(scaled)) {
+      const Point& p = scaled.point(v);
+      scaled.point(v) = Point(std::ldexp(p.x(), exponent), std::ldexp(p.y(), exponent),
+                              std::ldexp(p.z(), exponent));
+    }
+    EXPECT_EQ(values_of(scaled, np), reference) << "scaled by 2^" << exponent;
+    const auto cuts = RC::most_consistent_cuts(scaled, np.number_of_cuts(1));
+    const auto plain = RC::most_consistent_cuts(m, np.number_of_cuts(1));
+    ASSERT_EQ(cuts.size(), 1u);
+    EXPECT_EQ(cuts[0].length, std::ldexp(plain[0].length, exponent)) << "lengths in the mesh's units";
+  }
+}
+
+TEST(PartitionFunction, CutsBetweenSeparatePiecesCrossNoEdge)
+{
+  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::separate_boxes(2, 1.0), 0.25);
+  const Mesh m = to_mesh(lm);
+  const auto cuts = RC::most_consistent_cuts(m, RC::parameters::number_of_samples(100));
+  ASSERT_FALSE(cuts.empty());
+  // The cut between the boxes is the one most samples make: it crosses only the links between
+  // the pieces, so it has no mesh edge; its smaller side is the smaller box.
+  const RC::Cut<Mesh>& top = cuts.front();
+  EXPECT_TRUE(top.edges.empty());
+  EXPECT_EQ(top.length, 0.0);
+  EXPECT_GT(top.consistency, 0.3);
+  EXPECT_GT(top.number_of_samples, 30u);
+  std::vector<std::size_t> side(num_faces(m), 0);
+  for(face_descriptor f : top.smaller_side)
+    side[f] = 1;
+  EXPECT_EQ(SAI::rand_index(side, lm.labels), 1.0);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Segmentation
+
+TEST(Segmentation, DegenerateFacesStillGiveTheRequestedSegments)
+{
+  // Three faces around an edge fan, the third with collinear corners (zero area).
+  Mesh m;
+  const auto v0 = m.add_vertex(Point(0, 0, 0)), v1 = m.add_vertex(Point(1, 0, 0)),
+             v2 = m.add_vertex(Point(2, 0, 0)), v3 = m.add_vertex(Point(1, 1, 0));
+  ASSERT_NE(m.add_face(v0, v1, v3), Mesh::null_face());
+  ASSERT_NE(m.add_face(v1, v2, v3), Mesh::null_face());
+  ASSERT_NE(m.add_face(v0, v2, v1), Mesh::null_face());
+  auto seg = m.add_property_map<face_descriptor, std::size_t>("f:s", 9).first;
+  EXPECT_EQ(RC::segment_with_partition_function(m, seg, RC::parameters::number_of_segments(3)
+                                                           .number_of_samples(20)),
+            3u);
+  std::set<std::size_t> used;
+  for(face_descriptor f : faces(m))
+    used.insert(seg[f]);
+  EXPECT_EQ(used, (std::set<std::size_t>{0, 1, 2}));
+}
 
 TEST(Segmentation, RecoversTheKnownParts)
 {

@@ -22,11 +22,13 @@ enum Sampling_method
   /// sides.
   MIN_CUT = 0,
   /// K-means clustering from random seed faces under traversal distances; each seed moves to the
-  /// face of its segment furthest from the segment's boundary until the seeds stop moving.
+  /// face of its segment furthest from the segment's boundary until the seeds stop moving (at most
+  /// 30 rounds).
   K_MEANS = 1,
   /// Randomized hierarchical clustering under the area-normalized cut: each merge is drawn at
-  /// random, better merges being much more likely. Each run contributes its segmentations into
-  /// 2, 3, ..., `number_of_clusters` segments.
+  /// random, better merges being much more likely (with probability about proportional to the
+  /// gain raised to 1/`randomness`). Each run contributes its segmentations into 2, 3, ...,
+  /// `number_of_clusters` segments.
   HIERARCHICAL = 2
 };
 

@@ -35,13 +35,15 @@ struct Cut
   /// The face type of the mesh.
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
 
-  /// The mesh edges the cut goes through, in the order of `edges(tm)`.
+  /// The mesh edges the cut goes through, in the order of `edges(tm)`. A cut that only separates
+  /// connected components of the mesh from each other crosses no edge: it is empty then.
   std::vector<edge_descriptor> edges;
   /// `MIN_CUT` sampling: the faces of the side of smaller area; empty for the segmentations of the
   /// other samplers, which have more than two segments.
   std::vector<face_descriptor> smaller_side;
   /// The consistency: the length-weighted mean of the partition function over `edges`, in
-  /// \f$[0, 1]\f$.
+  /// \f$[0, 1]\f$ (for a cut that only separates connected components, the mean value of the
+  /// links between components that it cuts).
   double consistency = 0;
   /// The total length of `edges`.
   double length = 0;
@@ -50,7 +52,8 @@ struct Cut
   double normalized_cut = 0;
   /// The number of samples that gave this cut (itself and its duplicates).
   std::size_t number_of_samples = 0;
-  /// The index of the sample it was first drawn as (its random stream).
+  /// The index of the sample that represents it (its most consistent sample; the index of its
+  /// random stream).
   std::size_t sample_index = 0;
 };
 
@@ -143,8 +146,8 @@ most_consistent_cuts(const TriangleMesh& tm, const NamedParameters& np = paramet
     for(std::uint32_t v : c.smaller_side)
       cut.smaller_side.push_back(mg.faces[v]);
     cut.consistency = c.consistency;
-    cut.length = c.length;
-    cut.normalized_cut = c.score;
+    cut.length = c.length * g.length_unit; // the graph's lengths are in units of length_unit
+    cut.normalized_cut = c.score / g.length_unit;
     cut.number_of_samples = c.occurrences;
     cut.sample_index = c.first_sample;
     result.push_back(std::move(cut));

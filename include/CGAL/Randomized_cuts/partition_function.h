@@ -87,11 +87,12 @@ creases. Three samplers are available (`sampling_method`):
   for \f$d \le s\f$, falling linearly to 1 at \f$d = 3s\f$ and 1 beyond, so that neither side is
   smaller than about the part size \f$s\f$; then the minimum cut between the two faces.
 - `K_MEANS`: `number_of_clusters` random seed faces; every face joins its nearest seed; every seed
-  moves to the face of its segment furthest from the segment's boundary; until the seeds stop.
+  moves to the face of its segment furthest from the segment's boundary; until the seeds stop
+  (at most 30 rounds).
 - `HIERARCHICAL`: area-normalized-cut merging where each merge is drawn at random among the
-  candidates, with probability proportional to \f$|\Delta J|^{1/r}\f$ (the candidates' costs mapped
-  to their share of the best one, raised to \f$1/r\f$); each run contributes its segmentations into
-  2, ..., `number_of_clusters` segments.
+  candidates, with probability about proportional to \f$|\Delta J|^{1/r}\f$ (the candidates' gains
+  mapped to their share of the best one, raised to \f$1/r\f$); each run contributes its
+  segmentations into 2, ..., `number_of_clusters` segments.
 
 Faces of different connected components are joined by weak links (as in
 `CGAL::Consistent_segmentation::hierarchical_segmentation()`), so that a model made of pieces is

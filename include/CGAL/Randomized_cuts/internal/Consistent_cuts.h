@@ -198,7 +198,9 @@ inline std::vector<Graph_cut> distinct_cuts(const Dual_graph& g, const std::vect
         const double difference = kept.smaller_size + candidate.smaller_size - 2 * common;
         // Swapped: kept's side against the complement of the candidate's.
         const double swapped = total_size - difference;
-        merged = (std::min)(difference, swapped) <= limit;
+        // Sides of zero area (degenerate faces) are only duplicates when they are the same faces.
+        merged = limit > 0 ? (std::min)(difference, swapped) <= limit
+                           : kept.smaller_side == candidate.smaller_side;
       }
       if(merged) {
         ++kept.occurrences;

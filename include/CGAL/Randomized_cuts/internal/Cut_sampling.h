@@ -148,11 +148,14 @@ double cut_of_labelling(const Dual_graph& g, const std::vector<Label>& label, st
   return j;
 }
 
-inline double score_weight(double score, bool score_weighting)
+// 1 / J, with J floored at 1e-9 / (bounding-box diagonal): a cut of no cost at all (zero-length
+// edges only) counts as much as a very clean cut, not infinitely more.
+inline double score_weight(double score, bool score_weighting, const Dual_graph& g)
 {
   if(!score_weighting)
     return 1.0;
-  return 1.0 / (std::max)(score, 1e-300);
+  const double floor = 1e-9 / (g.bbox_diagonal > 0 ? g.bbox_diagonal : 1.0);
+  return 1.0 / (std::max)(score, floor);
 }
 
 // Faces drawn with probability proportional to their area.
@@ -266,7 +269,7 @@ public:
         w.side[i] = SAI::Dual_graph_min_cut::is_source_side(w.flow, i) ? 0 : 1;
       Sampled_cut& c = out.scales[k];
       c.score = cut_of_labelling(g, w.side, 2, c.cut_edges, w.size, w.cut);
-      c.weight = score_weight(c.score, m_o.score_weighting);
+      c.weight = score_weight(c.score, m_o.score_weighting, g);
     }
     out.total_weight = 0;
   }
@@ -347,7 +350,7 @@ public:
     out.scales.resize(1);
     Sampled_cut& c = out.scales[0];
     c.score = cut_of_labelling(g, label, k, c.cut_edges, w.size, w.cut);
-    c.weight = score_weight(c.score, m_o.score_weighting);
+    c.weight = score_weight(c.score, m_o.score_weighting, g);
     out.total_weight = 0;
   }
 
@@ -394,7 +397,7 @@ public:
     out.scales.resize(1);
     Sampled_cut& c = out.scales[0];
     c.score = cut_of_labelling(g, w.label, k, c.cut_edges, w.size, w.cut);
-    c.weight = score_weight(c.score, m_o.score_weighting);
+    c.weight = score_weight(c.score, m_o.score_weighting, g);
 
     // The coarser levels: merge the k segments further, as the run did, and count for every cut
     // edge the weight of the levels at which it is still cut.
@@ -435,7 +438,7 @@ public:
       for(std::uint32_t x = 0; x < k; ++x)
         if(coarse.find(x) == x && level_size[x] > 0)
           score += level_cut[x] / level_size[x];
-      const double weight = score_weight(score, m_o.score_weighting);
+      const double weight = score_weight(score, m_o.score_weighting, g);
       out.total_weight += weight;
       for(auto& amount : out.amounts) {
         const std::uint32_t e = amount.first;

@@ -53,6 +53,8 @@ public:
     const std::size_t n = m_g.number_of_nodes();
     const std::size_t k = (std::min)(m_o.number_of_segments, n);
     std::vector<std::size_t> label(n, 0);
+    if(k <= 1 && whole_values == nullptr)
+      return label; // one segment: nothing to sample
     std::vector<Proposal> proposals; // by segment label
     std::vector<std::uint32_t> all(n);
     std::iota(all.begin(), all.end(), 0u);
@@ -156,15 +158,15 @@ private:
     for(std::size_t e = 0; e < sub.number_of_edges(); ++e)
       if(side[sub.edge_source[e]] != side[sub.edge_target[e]])
         cut += sub.cut_cost[e];
-    if(!(size[0] > 0) || !(size[1] > 0))
-      return p;
-    // The smaller side becomes the new segment.
+    // The smaller side becomes the new segment. A side of zero area (degenerate faces only) gets
+    // a tiny size: its split is proposed, but after every other.
     const char moving = size[1] <= size[0] ? 1 : 0;
     for(std::size_t i = 0; i < nodes.size(); ++i)
       if(side[i] == moving)
         p.part.push_back(nodes[i]);
+    const double floor = 1e-9 * m_g.total_size() / double(m_g.number_of_nodes());
     p.valid = !p.part.empty() && p.part.size() < nodes.size();
-    p.priority = cut * (1.0 / size[0] + 1.0 / size[1]);
+    p.priority = cut * (1.0 / (std::max)(size[0], floor) + 1.0 / (std::max)(size[1], floor));
     return p;
   }
 

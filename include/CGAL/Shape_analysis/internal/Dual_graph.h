@@ -64,6 +64,10 @@ struct Dual_graph
   std::size_t number_of_mesh_edges = 0;
   double mean_mesh_edge_length = 0;
   double bbox_diagonal = 0;
+  // Positions, lengths and sizes are in units of `length_unit` of the mesh's coordinates: 1, or for
+  // meshes of extreme coordinates a power of two that brings them below 1 in absolute value (an
+  // exact scaling, which keeps squared lengths and areas finite whatever the magnitude).
+  double length_unit = 1;
 
   std::size_t number_of_nodes() const { return node_size.size(); }
   std::size_t number_of_edges() const { return edge_source.size(); }
@@ -136,6 +140,7 @@ inline void induced_subgraph(const Dual_graph& g, const std::vector<std::uint32_
   sub.number_of_mesh_edges = g.number_of_mesh_edges;
   sub.mean_mesh_edge_length = g.mean_mesh_edge_length;
   sub.bbox_diagonal = g.bbox_diagonal;
+  sub.length_unit = g.length_unit;
   sub.build_adjacency();
 }
 
@@ -179,7 +184,20 @@ void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap f
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
 
-  auto point = [&](typename GT::vertex_descriptor v) { return to_vector(get(vpm, v)); };
+  // Coordinates beyond 2^128 or under 2^-128 (in the largest absolute value over the face
+  // corners) would overflow or underflow the squared lengths of cross products: they are scaled
+  // exactly, by the power of two that brings that value into [0.5, 1). Others are left alone.
+  double largest = 0;
+  for(auto f : faces(tm))
+    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
+      const Vector_3d p = to_vector(get(vpm, v));
+      largest = (std::max)(largest, (std::max)(std::abs(p.x), (std::max)(std::abs(p.y), std::abs(p.z))));
+    }
+  int exponent = 0;
+  if(largest > 0 && std::isfinite(largest) && (largest > 0x1p128 || largest < 0x1p-128))
+    std::frexp(largest, &exponent);
+  const double scale = std::ldexp(1.0, -exponent);
+  auto point = [&](typename GT::vertex_descriptor v) { return to_vector(get(vpm, v)) * scale; };
 
   // Faces are counted through the index map (num_faces() of a Surface_mesh with removed faces
   // counts them too): `fim` must map the faces to 0..n-1.
@@ -189,6 +207,7 @@ void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap f
   if(n >= std::size_t((std::numeric_limits<std::uint32_t>::max)()))
     throw Bad_input("the mesh has too many faces (at most 2^32 - 2)");
   g = Dual_graph();
+  g.length_unit = std::ldexp(1.0, exponent);
   g.node_size.assign(n, 0.0);
   g.node_position.assign(n, Vector_3d());
   g.node_normal.assign(n, Vector_3d());

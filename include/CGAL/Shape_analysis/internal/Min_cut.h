@@ -221,6 +221,8 @@ public:
   explicit Dual_graph_min_cut(const Dual_graph& g) : m_g(g), m_flow(g.first_arc, g.arc_target, m_reverse)
   {
     const std::size_t arcs = g.arc_target.size();
+    if(arcs >= std::size_t(0xFFFFFFF0u))
+      throw Bad_input("min-cut: the graph has too many edges (at most 2^31 - 8)");
     // The two arcs of each graph edge: the first and the second one met.
     std::vector<std::uint32_t> first(g.number_of_edges(), no_arc);
     m_reverse.assign(arcs, no_arc);

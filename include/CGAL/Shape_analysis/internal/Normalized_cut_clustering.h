@@ -162,7 +162,7 @@ public:
 private:
   struct Entry
   {
-    int level; // 0: a cluster smaller than `small_size` is involved; such pairs go first
+    int level; // 0-1: a cluster smaller than `small_size` is involved; such pairs go first
     double key;
     double delta;
     Id a, b;
@@ -215,15 +215,23 @@ private:
       return;
     const double d = delta(a, b, w_ab);
     double key = d;
+    // Pairs with a speck first (level 0-1), then the others (2-3).
+    int level = (m_size[a] < m_small_size || m_size[b] < m_small_size) ? 0 : 2;
     if(m_randomness > 0) {
-      // Gumbel-max trick: the smallest key among the queued pairs is a draw from them with
-      // probability proportional to |d|^(1/r) among the merges that lower J (d < 0); merges that
-      // do not lower J come after all of those, drawn with probability proportional to d^(-1/r).
+      // Gumbel-max trick, in the log domain: the smallest key among the queued pairs is a draw
+      // from them with probability proportional to |d|^(1/r) among the merges that lower J
+      // (d < 0; the noise of a pair is drawn when it is queued, so later draws are only about
+      // so distributed); merges that do not lower J come after all of those (level + 1), drawn
+      // with probability proportional to d^(-1/r).
       const double u = (std::max)(1e-300, m_rng.uniform());
       const double gumbel = -std::log(-std::log(u));
-      key = d < 0 ? d * std::exp(m_randomness * gumbel) : d * std::exp(-m_randomness * gumbel);
+      if(d < 0)
+        key = -(std::log(-d) + m_randomness * gumbel);
+      else {
+        key = (d > 0 ? std::log(d) : -std::numeric_limits<double>::infinity()) - m_randomness * gumbel;
+        ++level;
+      }
     }
-    const int level = (m_size[a] < m_small_size || m_size[b] < m_small_size) ? 0 : 1;
     m_queue.push(Entry{level, key, d, a, b, m_version[a], m_version[b]});
   }
 

@@ -9,6 +9,7 @@
 // item to item). Items must not depend on which thread or workspace runs them: results are then
 // identical for any number of threads.
 
+#include <algorithm>
 #include <cstddef>
 #include <memory>
 
@@ -60,7 +61,7 @@ public:
       if(m_threads == 0)
         loop();
       else {
-        tbb::task_arena arena(static_cast<int>(m_threads));
+        tbb::task_arena arena(static_cast<int>((std::min)(m_threads, std::size_t(1) << 16)));
         arena.execute(loop);
       }
       return;
