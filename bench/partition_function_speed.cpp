@@ -15,7 +15,7 @@
 // decimation excluded), on all cores (TBB) and on one thread; min and median over the repeats.
 // With --other-samplers N > 0, the K-means and hierarchical samplers are timed too, with N samples.
 // The multi-scale partition function (part sizes 0.02, 0.05, 0.1) is timed on the camel, against
-// one single-scale run.
+// one single-scale run, and the minimum cuts alone with our max-flow against Boost's.
 // JSON to stdout and to FILE; progress to stderr.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -25,6 +25,9 @@
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
 
 #include <CGAL/Randomized_cuts/partition_function.h>
+#include <CGAL/Shape_analysis/internal/Min_cut.h>
+#include <CGAL/Shape_analysis/internal/Random.h>
+#include <CGAL/Shape_analysis/internal/Shortest_paths.h>
 #include <CGAL/Shape_analysis/internal/Json.h>
 #include <CGAL/Shape_analysis/internal/Parallel.h>
 
@@ -88,6 +91,81 @@ Json time_partition_function(const Mesh& mesh, RC::Sampling_method method, std::
   j["mean_edge_value"] = sum / double(values.size());
   if(median_seconds != nullptr)
     *median_seconds = median(seconds);
+  return j;
+}
+
+// The minimum cuts of `samples` min-cut samples (random face pairs, penalties of part size 0.05)
+// on the dual graph of `mesh`, solved on one thread by our Boykov-Kolmogorov (no terminal arcs,
+// buffers reused) and by Boost's boykov_kolmogorov_max_flow through a graph with terminal arcs
+// (the source and sink faces tied to the terminals by infinite arcs). Distances and capacities
+// are computed once, outside the timings; the two flows must agree.
+Json compare_max_flows(const Mesh& mesh, std::size_t samples)
+{
+  namespace SAI = CGAL::Shape_analysis::internal;
+  typedef CGAL::Shape_analysis::parameters::Default_named_parameters Defaults;
+  const Defaults defaults;
+  const RC::internal::Mesh_sampling<Mesh, Defaults> sampling(mesh, defaults, "bench");
+  const SAI::Dual_graph& g = sampling.graph();
+  const std::size_t n = g.number_of_nodes(), m = g.number_of_edges();
+  std::vector<std::vector<double>> capacity(samples, std::vector<double>(m));
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pair(samples);
+  SAI::Graph_shortest_paths from_a, from_b;
+  for(std::size_t i = 0; i < samples; ++i) {
+    SAI::Random_stream rng(1, i);
+    const auto a = static_cast<std::uint32_t>(rng.index(n));
+    auto b = static_cast<std::uint32_t>(rng.index(n - 1));
+    b += b >= a ? 1 : 0;
+    pair[i] = {a, b};
+    from_a.run(g, g.traversal_cost, a);
+    from_b.run(g, g.traversal_cost, b);
+    for(std::size_t e = 0; e < m; ++e) {
+      const std::uint32_t u = g.edge_source[e], v = g.edge_target[e];
+      const double da = 0.5 * (from_a.distance(u) + from_a.distance(v));
+      const double db = 0.5 * (from_b.distance(u) + from_b.distance(v));
+      const double d = da + db > 0 ? (std::min)(da, db) / (da + db) : 0.5;
+      capacity[i][e] = g.cut_cost[e] * RC::internal::seed_distance_penalty(d, 0.05);
+    }
+  }
+  std::vector<double> ours(samples), boost_flow(samples);
+  const auto start_ours = std::chrono::steady_clock::now();
+  {
+    SAI::Dual_graph_min_cut cut(g);
+    SAI::Dual_graph_min_cut::Workspace w;
+    for(std::size_t i = 0; i < samples; ++i)
+      ours[i] = cut.solve(capacity[i], pair[i].first, pair[i].second, w);
+  }
+  const double ours_seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start_ours).count();
+  const auto start_boost = std::chrono::steady_clock::now();
+  {
+    SAI::Min_cut_solver solver(n);
+    for(std::size_t e = 0; e < m; ++e)
+      solver.add_edge(g.edge_source[e], g.edge_target[e]);
+    solver.finalize();
+    for(std::size_t i = 0; i < samples; ++i) {
+      for(std::size_t e = 0; e < m; ++e)
+        solver.set_edge_capacity(e, capacity[i][e], capacity[i][e]);
+      solver.clear_terminals();
+      solver.constrain(pair[i].first, SAI::Min_cut_solver::SOURCE);
+      solver.constrain(pair[i].second, SAI::Min_cut_solver::SINK);
+      boost_flow[i] = solver.solve();
+    }
+  }
+  const double boost_seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start_boost).count();
+  double largest_difference = 0;
+  for(std::size_t i = 0; i < samples; ++i)
+    largest_difference = (std::max)(largest_difference,
+                                    std::abs(ours[i] - boost_flow[i]) / (std::max)(1e-300, boost_flow[i]));
+  Json j = Json::object();
+  j["cuts"] = samples;
+  j["threads"] = 1;
+  j["ours_seconds"] = ours_seconds;
+  j["boost_boykov_kolmogorov_seconds"] = boost_seconds;
+  j["boost_over_ours"] = boost_seconds / ours_seconds;
+  j["largest_relative_flow_difference"] = largest_difference;
+  std::cerr << "  max-flow, " << samples << " cuts on one thread: ours " << ours_seconds
+            << " s, Boost " << boost_seconds << " s\n";
   return j;
 }
 
@@ -199,6 +277,7 @@ int main(int argc, char** argv)
     camel_json["multiscale_all_threads"] = m;
     std::cerr << "  camel multi-scale (3 part sizes): " << median(seconds) << " s\n";
   }
+  camel_json["max_flow_only"] = compare_max_flows(mesh, samples);
   if(other > 0) {
     camel_json["k_means_all_threads"] =
       time_partition_function(mesh, RC::K_MEANS, other, 0, 1, "camel k-means");

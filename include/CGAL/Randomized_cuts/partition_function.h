@@ -239,7 +239,7 @@ Computes the partition function of a triangle mesh for several part sizes at onc
 sampling): every sample draws one source face and one sink face, computes the distances from both
 once, and solves one minimum cut per part size, from the smallest part size to the largest; as
 the penalties only grow with the part size, each cut continues from the flow of the previous one
-instead of starting again (three part sizes cost about 1.2 times one). Small part sizes show small
+instead of starting again (three part sizes cost about 1.5 times one). Small part sizes show small
 features (fingers), large ones the main parts (limbs); the values of one part size are those
 `partition_function()` gives with the same `random_seed` and that `part_size`, except where
 rounding decides between two equally cheap cuts of a sample.
