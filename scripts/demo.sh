@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job on packaged data: segments meshes from Debian's libcgal-demo into parts, computes
-# the partition function of the camel and segments the elephant along its most consistent cuts;
+# the partition function of the camel and segments the elephant along its most consistent cuts,
+# segments four animals consistently and the cow symmetrically;
 # writes coloured meshes (open them in MeshLab or CloudCompare), Princeton-benchmark label files,
 # edge values and JSON reports to build/demo/. Installs missing Debian packages and builds the
 # tool first.
@@ -34,6 +35,13 @@ segment blobby_3cc 3
   --output "$out/elephant_partition_segments.ply" --seg "$out/elephant_partition_segments.seg" \
   --report "$out/elephant_partition_segments.json" --verbose
 
+# Consistent segmentation (Consistent_segmentation): four-legged animals segmented together, the
+# same colour for the same part in every mesh, and the cow segmented symmetrically.
+"$tool" coseg "$data/cow.off" "$data/bull.off" "$data/elephant.off" "$data/camel.off" --segments 7 \
+  --output-dir "$out/coseg" --report "$out/coseg.json" --verbose
+"$tool" coseg "$data/cow.off" --segments 7 --symmetry-plane 0,0,1,0 \
+  --output-dir "$out/coseg_symmetric" --report "$out/coseg_symmetric.json" --verbose
+
 echo
 echo "Coloured segmentations (per-face colours) and partition functions (per-vertex colours) in $out:"
-ls -1 "$out"/*.ply
+ls -1 "$out"/*.ply "$out"/coseg/*.ply "$out"/coseg_symmetric/*.ply

@@ -21,6 +21,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace shape_analysis_cli {
@@ -217,7 +218,7 @@ namespace {
 
 // Temporary files to remove if the run is interrupted (SIGINT, SIGTERM, SIGHUP): plain buffers,
 // so that the signal handler only reads memory and calls unlink().
-constexpr std::size_t max_temporaries = 16;
+constexpr std::size_t max_temporaries = 4096; // coseg stages two outputs per mesh
 char temporary_names[max_temporaries][4096];
 volatile std::sig_atomic_t temporary_count = 0;
 
@@ -314,6 +315,10 @@ void Output_files::stage(const std::string& path, bool binary,
   const int fd = ::mkstemp(name.data());
   if(fd < 0)
     throw Cli_error("cannot write '" + path + "': " + std::strerror(errno));
+  // mkstemp() creates the file readable by its owner only; outputs get the usual permissions.
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::fchmod(fd, 0666 & ~mask);
   ::close(fd);
   const std::string temporary(name.data());
   track_temporary(temporary);

@@ -184,6 +184,7 @@ private:
 void add_segment_command(CLI::App& app, std::function<int()>& run);
 void add_register_command(CLI::App& app, std::function<int()>& run);
 void add_partition_commands(CLI::App& app, std::function<int()>& run); // partition, partition-segment
+void add_coseg_command(CLI::App& app, std::function<int()>& run);
 
 } // namespace shape_analysis_cli
 

@@ -45,7 +45,15 @@ namespace internal_np {
   X(value_scale_t, value_scale_tag, value_scale)                                     \
   X(number_of_points_t, number_of_points_tag, number_of_points)                      \
   X(partition_weighting_t, partition_weighting_tag, partition_weighting)             \
-  X(spread_rings_t, spread_rings_tag, spread_rings)
+  X(spread_rings_t, spread_rings_tag, spread_rings)                                   \
+  X(number_of_oversegments_t, number_of_oversegments_tag, number_of_oversegments)    \
+  X(adjacency_exponent_t, adjacency_exponent_tag, adjacency_exponent)                \
+  X(number_of_partners_t, number_of_partners_tag, number_of_partners)                \
+  X(normal_threshold_t, normal_threshold_tag, normal_threshold)                      \
+  X(correspondence_distance_t, correspondence_distance_tag, correspondence_distance) \
+  X(vertex_point_maps_t, vertex_point_maps_tag, vertex_point_maps)                   \
+  X(known_segment_maps_t, known_segment_maps_tag, known_segment_maps)                \
+  X(prior_segment_maps_t, prior_segment_maps_tag, prior_segment_maps)
 
 #define CGAL_SHAPE_ANALYSIS_DECLARE_TAG(X, Y, Z) enum X { Y };
 CGAL_SHAPE_ANALYSIS_NAMED_PARAMETER_LIST(CGAL_SHAPE_ANALYSIS_DECLARE_TAG)

@@ -1,0 +1,736 @@
+// Tests of CGAL::Consistent_segmentation::consistent_segmentation() and symmetric_segmentation():
+// procedural chair and table sets with known part labels must be co-segmented so that one global
+// matching of segment ids to labels is right on most of the area; parts found only in some chairs
+// (armrests) get segments of their own; known labels are kept exactly and the rest is filled in
+// (one example labels a set, a labelled set labels a new mesh, half-labelled meshes are
+// completed); the symmetric mode gives mirror faces the same id; the result does not depend on
+// the number of threads; CGAL's meshes of different animals are split into real parts, not into one
+// segment and scraps; bad input is refused with Bad_input without touching the output maps.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
+#include <CGAL/Consistent_segmentation/consistent_segmentation.h>
+#include <CGAL/Consistent_segmentation/hierarchical_segmentation.h>
+#include <CGAL/Shape_analysis/internal/Procedural_furniture.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef Mesh::Face_index face_descriptor;
+typedef Mesh::Property_map<face_descriptor, std::size_t> Id_map;
+typedef Mesh::Property_map<face_descriptor, long long> Label_map;
+
+namespace CS = CGAL::Consistent_segmentation;
+namespace SAI = CGAL::Shape_analysis::internal;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using SAI::Vector_3d;
+
+const std::size_t unset = std::numeric_limits<std::size_t>::max();
+
+// ---------------------------------------------------------------------------------------------
+// Helpers
+
+// Coarser boxes than the benchmark's (about 1,000 faces per chair) keep the tests fast.
+SAI::Furniture_options furniture(bool random_pose, double armrest_probability = 0.5)
+{
+  SAI::Furniture_options o;
+  o.edge_length = 0.07;
+  o.random_pose = random_pose;
+  o.armrest_probability = armrest_probability;
+  return o;
+}
+
+std::vector<Mesh> to_meshes(const std::vector<SAI::Furniture_model>& models)
+{
+  std::vector<Mesh> meshes(models.size());
+  for(std::size_t i = 0; i < models.size(); ++i)
+    SAI::fill_polygon_mesh(models[i].mesh, meshes[i]);
+  return meshes;
+}
+
+std::vector<Id_map> id_maps(std::vector<Mesh>& meshes)
+{
+  std::vector<Id_map> maps;
+  for(Mesh& m : meshes)
+    maps.push_back(m.add_property_map<face_descriptor, std::size_t>("f:coseg_id", unset).first);
+  return maps;
+}
+
+// The ids of every face of every mesh (faces in index order: the models' triangle order).
+std::vector<std::vector<std::size_t>> read_ids(const std::vector<Mesh>& meshes, const std::vector<Id_map>& maps)
+{
+  std::vector<std::vector<std::size_t>> ids(meshes.size());
+  for(std::size_t i = 0; i < meshes.size(); ++i)
+    for(auto f : faces(meshes[i]))
+      ids[i].push_back(maps[i][f]);
+  return ids;
+}
+
+// Co-segments `models` with `np`; returns the ids per mesh and face.
+template <typename NP>
+std::vector<std::vector<std::size_t>> cosegment(const std::vector<SAI::Furniture_model>& models, const NP& np,
+                                                CS::Consistent_segmentation_result* result = nullptr)
+{
+  std::vector<Mesh> meshes = to_meshes(models);
+  std::vector<Id_map> maps = id_maps(meshes);
+  const CS::Consistent_segmentation_result r = CS::consistent_segmentation(meshes, maps, np);
+  if(result != nullptr)
+    *result = r;
+  return read_ids(meshes, maps);
+}
+
+// Every face got an id below the number of segments, and `meshes_of_segment` says exactly which
+// meshes hold which id.
+void expect_consistent_result(const std::vector<std::vector<std::size_t>>& ids,
+                              const CS::Consistent_segmentation_result& r)
+{
+  ASSERT_EQ(r.meshes_of_segment.size(), r.number_of_segments);
+  ASSERT_EQ(r.segment_area.size(), r.number_of_segments);
+  std::vector<std::set<std::size_t>> seen(r.number_of_segments);
+  for(std::size_t i = 0; i < ids.size(); ++i)
+    for(std::size_t id : ids[i]) {
+      ASSERT_LT(id, r.number_of_segments);
+      seen[id].insert(i);
+    }
+  double area = 0;
+  for(std::size_t s = 0; s < r.number_of_segments; ++s) {
+    EXPECT_EQ(std::vector<std::size_t>(seen[s].begin(), seen[s].end()), r.meshes_of_segment[s]) << "segment " << s;
+    for(std::size_t i = 0; i < ids.size(); ++i)
+      EXPECT_EQ(r.occurs_in(s, i), seen[s].count(i) == 1);
+    area += r.segment_area[s];
+  }
+  EXPECT_NEAR(area, double(ids.size()), 1e-9 * double(ids.size()));
+}
+
+// Fraction of the area (each model counting as 1) of `models[i]` for i in `which` whose id equals
+// its true label.
+double direct_accuracy(const std::vector<SAI::Furniture_model>& models,
+                       const std::vector<std::vector<std::size_t>>& ids, const std::vector<std::size_t>& which)
+{
+  double right = 0;
+  for(std::size_t i : which) {
+    const SAI::Labelled_triangle_mesh& m = models[i].mesh;
+    double total = 0, good = 0;
+    for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
+      total += m.area(f);
+      if(ids[i][f] == m.labels[f])
+        good += m.area(f);
+    }
+    right += good / total;
+  }
+  return right / double(which.size());
+}
+
+template <typename F>
+void expect_bad_input(F f, const std::string& words)
+{
+  try {
+    f();
+    ADD_FAILURE() << "no exception; expected one with '" << words << "'";
+  } catch(const CGAL::Shape_analysis::Bad_input& e) {
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+  }
+}
+
+// The majority label (by area over the set) of every segment id.
+std::map<std::size_t, std::size_t> majority_labels(const std::vector<SAI::Furniture_model>& models,
+                                                   const std::vector<std::vector<std::size_t>>& ids)
+{
+  std::map<std::size_t, std::map<std::size_t, double>> overlap;
+  for(std::size_t i = 0; i < models.size(); ++i)
+    for(std::size_t f = 0; f < models[i].mesh.number_of_faces(); ++f)
+      overlap[ids[i][f]][models[i].mesh.labels[f]] += models[i].mesh.area(f);
+  std::map<std::size_t, std::size_t> result;
+  for(const auto& kv : overlap)
+    result[kv.first] = std::max_element(kv.second.begin(), kv.second.end(), [](const auto& a, const auto& b) {
+                         return a.second < b.second;
+                       })->first;
+  return result;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The accuracy measure itself must reject wrong segmentations.
+
+TEST(Measure, AccuracyRejectsWrongSegmentations)
+{
+  const auto models = SAI::procedural_chair_set(4, 3, furniture(false));
+  std::vector<std::vector<std::size_t>> truth(models.size()), one(models.size()), by_piece(models.size()),
+    swapped(models.size());
+  for(std::size_t i = 0; i < models.size(); ++i) {
+    truth[i] = models[i].mesh.labels;
+    one[i].assign(truth[i].size(), 0);
+    by_piece[i] = models[i].piece; // finer than the labels: still right
+    swapped[i] = truth[i];
+    if(i % 2 == 1) // the seat and back ids exchanged in every other chair
+      for(std::size_t& l : swapped[i])
+        l = l == SAI::SEAT ? SAI::BACK : l == SAI::BACK ? SAI::SEAT : l;
+  }
+  EXPECT_DOUBLE_EQ(SAI::furniture_label_accuracy(models, truth), 1.0);
+  EXPECT_DOUBLE_EQ(SAI::furniture_label_accuracy(models, by_piece), 1.0);
+  EXPECT_LT(SAI::furniture_label_accuracy(models, one), 0.6);
+  EXPECT_LT(SAI::furniture_label_accuracy(models, swapped), 0.85);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Co-segmentation of sets
+
+TEST(ChairSet, PartsAgreeAcrossTheSetInRandomPoses)
+{
+  const auto models = SAI::procedural_chair_set(10, 11, furniture(true));
+  CS::Consistent_segmentation_result r;
+  const auto ids = cosegment(models, CS::parameters::number_of_segments(8).random_seed(5), &r);
+  expect_consistent_result(ids, r);
+  EXPECT_EQ(r.number_of_segments, 8u);
+  EXPECT_EQ(r.number_of_aligned_pairs, 10u * 9u / 2u);
+  EXPECT_GT(r.number_of_correspondences, 10u * 9u * 500u);
+  EXPECT_LT(r.mean_alignment_rms, 0.05);
+  const double accuracy = SAI::furniture_label_accuracy(models, ids);
+  EXPECT_GE(accuracy, 0.9);
+
+  // Each mesh segmented alone has ids that mean nothing across the set: the same global matching
+  // scores much lower (this is what the correspondences buy).
+  std::vector<std::vector<std::size_t>> alone(models.size());
+  for(std::size_t i = 0; i < models.size(); ++i) {
+    Mesh m;
+    SAI::fill_polygon_mesh(models[i].mesh, m);
+    auto map = m.add_property_map<face_descriptor, std::size_t>("f:alone", unset).first;
+    CS::hierarchical_segmentation(m, map, CS::parameters::number_of_segments(4));
+    for(auto f : faces(m))
+      alone[i].push_back(map[f]);
+  }
+  EXPECT_LT(SAI::furniture_label_accuracy(models, alone), accuracy - 0.1);
+}
+
+TEST(ChairSet, ArmrestsGetSegmentsOfTheirOwn)
+{
+  const auto models = SAI::procedural_chair_set(10, 11, furniture(true));
+  std::size_t with_arms = 0;
+  for(const auto& m : models)
+    with_arms += m.has_armrests ? 1 : 0;
+  ASSERT_GT(with_arms, 1u);
+  ASSERT_LT(with_arms, models.size() - 1);
+  // Legs at different places of the chairs are told apart (one id per place, four or more in all:
+  // nothing links the front legs to the back ones), and so are the left and right armrests: ten
+  // segments leave room for both armrests.
+  CS::Consistent_segmentation_result r;
+  const auto ids = cosegment(models, CS::parameters::number_of_segments(10).random_seed(5), &r);
+  const auto majority = majority_labels(models, ids);
+  std::size_t armrest_segments = 0;
+  for(const auto& kv : majority) {
+    if(kv.second != SAI::ARMREST)
+      continue;
+    ++armrest_segments;
+    // An armrest segment lies (nearly) only in chairs with armrests.
+    double inside = 0, outside = 0;
+    for(std::size_t i = 0; i < models.size(); ++i)
+      for(std::size_t f = 0; f < ids[i].size(); ++f)
+        if(ids[i][f] == kv.first)
+          (models[i].has_armrests ? inside : outside) += models[i].mesh.area(f);
+    EXPECT_LT(outside, 0.05 * inside) << "segment " << kv.first;
+  }
+  EXPECT_GE(armrest_segments, 2u);
+  // Every armchair has most of its armrest area in armrest segments.
+  for(std::size_t i = 0; i < models.size(); ++i) {
+    if(!models[i].has_armrests)
+      continue;
+    double arm = 0, found = 0;
+    for(std::size_t f = 0; f < ids[i].size(); ++f)
+      if(models[i].mesh.labels[f] == SAI::ARMREST) {
+        arm += models[i].mesh.area(f);
+        if(majority.at(ids[i][f]) == SAI::ARMREST)
+          found += models[i].mesh.area(f);
+      }
+    EXPECT_GT(found, 0.8 * arm) << "chair " << i;
+  }
+}
+
+TEST(TableSet, TopsAndLegs)
+{
+  // A quarter of the tables stand on a central pedestal: there the top is split where the legs of
+  // the four-legged ones are, so only the four-legged ones must be (nearly) perfect.
+  const auto models = SAI::procedural_table_set(8, 21, furniture(true));
+  CS::Consistent_segmentation_result r;
+  const auto ids = cosegment(models, CS::parameters::number_of_segments(5).random_seed(2), &r);
+  expect_consistent_result(ids, r);
+  EXPECT_GE(SAI::furniture_label_accuracy(models, ids), 0.8);
+  std::vector<SAI::Furniture_model> four_legged;
+  std::vector<std::vector<std::size_t>> four_legged_ids;
+  for(std::size_t i = 0; i < models.size(); ++i)
+    if(models[i].number_of_pieces == 5) {
+      four_legged.push_back(models[i]);
+      four_legged_ids.push_back(ids[i]);
+    }
+  ASSERT_GE(four_legged.size(), 4u);
+  EXPECT_GE(SAI::furniture_label_accuracy(four_legged, four_legged_ids), 0.97);
+}
+
+TEST(ChairSet, LargeSetsAlignOnlyWithPartners)
+{
+  const auto models = SAI::procedural_chair_set(14, 4, furniture(true));
+  CS::Consistent_segmentation_result r;
+  const auto ids =
+    cosegment(models, CS::parameters::number_of_segments(8).number_of_partners(4).number_of_points(500), &r);
+  expect_consistent_result(ids, r);
+  // At least 14 * 4 / 2 pairs (each mesh has 4 partners), far fewer than all 91.
+  EXPECT_GE(r.number_of_aligned_pairs, 28u);
+  EXPECT_LE(r.number_of_aligned_pairs, 56u);
+  EXPECT_GE(SAI::furniture_label_accuracy(models, ids), 0.85);
+}
+
+TEST(ChairSet, SameResultForAnyNumberOfThreadsAndSeedMatters)
+{
+  const auto models = SAI::procedural_chair_set(6, 8, furniture(true));
+  const auto one = cosegment(models, CS::parameters::number_of_segments(6).random_seed(9).number_of_threads(1));
+  const auto two = cosegment(models, CS::parameters::number_of_segments(6).random_seed(9).number_of_threads(2));
+  const auto all = cosegment(models, CS::parameters::number_of_segments(6).random_seed(9));
+  EXPECT_EQ(one, two);
+  EXPECT_EQ(one, all);
+  CS::Consistent_segmentation_result a, b;
+  cosegment(models, CS::parameters::number_of_segments(6).random_seed(9), &a);
+  cosegment(models, CS::parameters::number_of_segments(6).random_seed(10), &b);
+  EXPECT_NE(a.number_of_correspondences, b.number_of_correspondences); // other samples
+}
+
+TEST(ChairSet, SingleMeshAndProgress)
+{
+  const auto models = SAI::procedural_chair_set(1, 8, furniture(false));
+  std::vector<double> reports;
+  CS::Consistent_segmentation_result r;
+  const auto ids = cosegment(models,
+                             CS::parameters::number_of_segments(3).progress_callback(
+                               [&](double f) { reports.push_back(f); }),
+                             &r);
+  expect_consistent_result(ids, r);
+  EXPECT_EQ(r.number_of_segments, 3u);
+  EXPECT_EQ(r.number_of_aligned_pairs, 0u);
+  ASSERT_FALSE(reports.empty());
+  EXPECT_TRUE(std::is_sorted(reports.begin(), reports.end()));
+  EXPECT_DOUBLE_EQ(reports.back(), 1.0);
+}
+
+TEST(RealMeshes, DifferentAnimalsDoNotCollapseIntoOneSegment)
+{
+  // CGAL's elephant, cow and hand: loose correspondences, and over-segments on which few or no
+  // samples fall. The segments must still split every mesh, not leave one segment covering
+  // nearly everything beside a few unsupported scraps.
+  std::vector<Mesh> meshes;
+  for(const char* name : {"elephant.off", "cow.off", "hand.off"}) {
+    Mesh m;
+    ASSERT_TRUE(CGAL::IO::read_polygon_mesh(std::string(SHAPE_ANALYSIS_DATA_DIR) + "/" + name, m)) << name;
+    meshes.push_back(m);
+  }
+  std::vector<Id_map> maps = id_maps(meshes);
+  const auto r =
+    CS::consistent_segmentation(meshes, maps, CS::parameters::number_of_segments(6).number_of_points(300));
+  const auto ids = read_ids(meshes, maps);
+  expect_consistent_result(ids, r);
+  for(std::size_t s = 0; s < r.number_of_segments; ++s) {
+    EXPECT_LT(r.segment_area[s], 0.7 * double(meshes.size())) << "segment " << s;
+    EXPECT_GT(r.segment_area[s], 0.01) << "segment " << s;
+  }
+  for(std::size_t i = 0; i < meshes.size(); ++i) {
+    // No segment covers more than 80% of any mesh.
+    std::map<std::size_t, double> area;
+    double total = 0;
+    std::size_t f = 0;
+    for(auto fd : faces(meshes[i])) {
+      const double a = PMP::face_area(fd, meshes[i]);
+      area[ids[i][f++]] += a;
+      total += a;
+    }
+    for(const auto& kv : area)
+      EXPECT_LT(kv.second, 0.8 * total) << "mesh " << i << " segment " << kv.first;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Segmentation transfer
+
+// Known labels for the models in `labelled` (all faces, or only those with `keep(i, f)`).
+template <typename Keep>
+std::vector<std::vector<std::size_t>> transfer(const std::vector<SAI::Furniture_model>& models,
+                                               const std::vector<std::size_t>& labelled, Keep keep,
+                                               std::size_t k, std::vector<Mesh>& meshes,
+                                               CS::Consistent_segmentation_result* r = nullptr)
+{
+  meshes = to_meshes(models);
+  std::vector<Label_map> known;
+  for(std::size_t i = 0; i < meshes.size(); ++i) {
+    known.push_back(meshes[i].add_property_map<face_descriptor, long long>("f:known", -1).first);
+    if(std::find(labelled.begin(), labelled.end(), i) == labelled.end())
+      continue;
+    std::size_t f = 0;
+    for(auto fd : faces(meshes[i])) {
+      if(keep(i, f))
+        known[i][fd] = static_cast<long long>(models[i].mesh.labels[f]);
+      ++f;
+    }
+  }
+  std::vector<Id_map> maps = id_maps(meshes);
+  const auto result = CS::consistent_segmentation(
+    meshes, maps, CS::parameters::number_of_segments(k).known_segment_maps(known).random_seed(3));
+  if(r != nullptr)
+    *r = result;
+  return read_ids(meshes, maps);
+}
+
+void expect_known_kept(const std::vector<SAI::Furniture_model>& models, const std::vector<Mesh>& meshes,
+                       const std::vector<std::vector<std::size_t>>& ids)
+{
+  for(std::size_t i = 0; i < meshes.size(); ++i) {
+    auto known = meshes[i].property_map<face_descriptor, long long>("f:known").first;
+    std::size_t f = 0;
+    for(auto fd : faces(meshes[i])) {
+      if(known[fd] >= 0)
+        ASSERT_EQ(ids[i][f], static_cast<std::size_t>(known[fd])) << "mesh " << i << " face " << f;
+      ++f;
+    }
+  }
+  (void)models;
+}
+
+TEST(Transfer, OneExampleLabelsTheSet)
+{
+  // Chair 0 of this set has armrests: its four labels are the four parts.
+  const auto models = SAI::procedural_chair_set(6, 15, furniture(true, 0.6));
+  std::size_t example = models.size();
+  for(std::size_t i = 0; i < models.size() && example == models.size(); ++i)
+    if(models[i].has_armrests)
+      example = i;
+  ASSERT_LT(example, models.size());
+  std::vector<Mesh> meshes;
+  CS::Consistent_segmentation_result r;
+  const auto ids = transfer(models, {example}, [](std::size_t, std::size_t) { return true; }, 4, meshes, &r);
+  expect_known_kept(models, meshes, ids);
+  EXPECT_EQ(r.number_of_segments, 4u);
+  for(std::size_t l = 0; l < 4; ++l)
+    EXPECT_EQ(r.segment_label[l], static_cast<long long>(l));
+  std::vector<std::size_t> others;
+  for(std::size_t i = 0; i < models.size(); ++i)
+    if(i != example)
+      others.push_back(i);
+  // The ids are the labels themselves: no matching.
+  EXPECT_GE(direct_accuracy(models, ids, others), 0.85);
+}
+
+TEST(Transfer, LabelledSetLabelsANewMesh)
+{
+  const auto models = SAI::procedural_chair_set(6, 27, furniture(true));
+  std::vector<Mesh> meshes;
+  const auto ids =
+    transfer(models, {0, 1, 2, 3, 4}, [](std::size_t, std::size_t) { return true; }, 4, meshes);
+  expect_known_kept(models, meshes, ids);
+  EXPECT_GE(direct_accuracy(models, ids, {5}), 0.9);
+}
+
+TEST(Transfer, HalfLabelledMeshesAreCompleted)
+{
+  // Every chair has the labels of half of its pieces (every other piece, starting with the first
+  // in even chairs and the second in odd ones): what one chair lacks, others have.
+  const auto models = SAI::procedural_chair_set(6, 31, furniture(true));
+  auto half = [&](std::size_t i, std::size_t f) { return (models[i].piece[f] + i) % 2 == 0; };
+  std::vector<Mesh> meshes;
+  const auto ids = transfer(models, {0, 1, 2, 3, 4, 5}, half, 4, meshes);
+  expect_known_kept(models, meshes, ids);
+  // Only the faces without a known label count.
+  double right = 0, total = 0;
+  for(std::size_t i = 0; i < models.size(); ++i)
+    for(std::size_t f = 0; f < ids[i].size(); ++f)
+      if(!half(i, f)) {
+        total += models[i].mesh.area(f);
+        if(ids[i][f] == models[i].mesh.labels[f])
+          right += models[i].mesh.area(f);
+      }
+  EXPECT_GE(right / total, 0.9);
+}
+
+TEST(Transfer, MapsWithoutKnownLabelsChangeNothing)
+{
+  const auto models = SAI::procedural_chair_set(3, 5, furniture(true));
+  const auto plain = cosegment(models, CS::parameters::number_of_segments(6).random_seed(3));
+  std::vector<Mesh> meshes;
+  const auto none = transfer(models, {}, [](std::size_t, std::size_t) { return true; }, 6, meshes);
+  EXPECT_EQ(plain, none);
+}
+
+TEST(Transfer, SparseLabelsKeepTheirValues)
+{
+  // Labels 0..3 shifted to 10..13: ids 10..13 for them, the others after, ids 0..9 unused.
+  const auto models = SAI::procedural_chair_set(3, 5, furniture(true, 1.0));
+  std::vector<Mesh> meshes = to_meshes(models);
+  std::vector<Label_map> known;
+  for(std::size_t i = 0; i < meshes.size(); ++i) {
+    known.push_back(meshes[i].add_property_map<face_descriptor, long long>("f:known", -1).first);
+    std::size_t f = 0;
+    if(i == 0)
+      for(auto fd : faces(meshes[i]))
+        known[i][fd] = 10 + static_cast<long long>(models[i].mesh.labels[f++]);
+  }
+  std::vector<Id_map> maps = id_maps(meshes);
+  const auto r = CS::consistent_segmentation(meshes, maps,
+                                             CS::parameters::number_of_segments(6).known_segment_maps(known));
+  const auto ids = read_ids(meshes, maps);
+  expect_consistent_result(ids, r);
+  EXPECT_EQ(r.number_of_segments, 16u);
+  for(std::size_t s = 0; s < 10; ++s)
+    EXPECT_TRUE(r.meshes_of_segment[s].empty());
+  for(std::size_t s = 10; s < 14; ++s)
+    EXPECT_EQ(r.segment_label[s], static_cast<long long>(s));
+  for(std::size_t f = 0; f < ids[0].size(); ++f)
+    ASSERT_EQ(ids[0][f], 10 + models[0].mesh.labels[f]);
+
+  known[1][*faces(meshes[1]).begin()] = 1LL << 40;
+  expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, CS::parameters::known_segment_maps(known)); },
+                    "above the largest allowed");
+}
+
+TEST(Transfer, TwoKnownLabelsNeverMerge)
+{
+  // Far fewer segments asked than known labels: the known labels stay apart.
+  const auto models = SAI::procedural_chair_set(3, 5, furniture(false, 1.0));
+  std::vector<Mesh> meshes;
+  CS::Consistent_segmentation_result r;
+  const auto ids = transfer(models, {0}, [](std::size_t, std::size_t) { return true; }, 1, meshes, &r);
+  expect_known_kept(models, meshes, ids);
+  EXPECT_EQ(r.number_of_segments, 4u);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Symmetric segmentation
+
+// The fraction of the area of `m` whose face has the id of the face closest to its mirror image.
+double mirror_agreement(const SAI::Labelled_triangle_mesh& m, const std::vector<std::size_t>& ids,
+                        const Vector_3d& n, double d)
+{
+  std::vector<Vector_3d> centers;
+  for(const auto& t : m.triangles)
+    centers.push_back((m.point(t[0]) + m.point(t[1]) + m.point(t[2])) / 3.0);
+  double good = 0, total = 0;
+  for(std::size_t f = 0; f < centers.size(); ++f) {
+    const Vector_3d q = centers[f] - n * (2 * (SAI::dot(n, centers[f]) - d));
+    std::size_t best = 0;
+    double best_d = std::numeric_limits<double>::infinity();
+    for(std::size_t g = 0; g < centers.size(); ++g) {
+      const double e = (centers[g] - q).squared_length();
+      if(e < best_d) {
+        best_d = e;
+        best = g;
+      }
+    }
+    total += m.area(f);
+    if(ids[best] == ids[f])
+      good += m.area(f);
+  }
+  return good / total;
+}
+
+// A chair bent slightly out of symmetry: x += 0.04 sin(3 y) + 0.03 z^2 (its plane stays near x = 0).
+SAI::Labelled_triangle_mesh bent_chair(std::uint64_t seed)
+{
+  SAI::Labelled_triangle_mesh m = SAI::procedural_chair(seed, 0, furniture(false, 1.0)).mesh;
+  for(auto& p : m.points)
+    p[0] += 0.04 * std::sin(3 * p[1]) + 0.03 * p[2] * p[2];
+  return m;
+}
+
+TEST(Symmetric, MirrorFacesShareTheirSegment)
+{
+  for(std::uint64_t seed : {2u, 6u}) {
+    SCOPED_TRACE(seed);
+    const SAI::Labelled_triangle_mesh lm = bent_chair(seed);
+    Mesh m;
+    SAI::fill_polygon_mesh(lm, m);
+    auto sym = m.add_property_map<face_descriptor, std::size_t>("f:sym", unset).first;
+    const CS::Consistent_segmentation_result r = CS::symmetric_segmentation(
+      m, Kernel::Plane_3(1, 0, 0, 0), sym, CS::parameters::number_of_segments(5).random_seed(1));
+    const std::size_t k = r.number_of_segments;
+    EXPECT_EQ(k, 5u);
+    EXPECT_EQ(r.number_of_aligned_pairs, 0u);
+    EXPECT_GT(r.number_of_correspondences, 500u); // mirror links
+    std::vector<std::size_t> ids;
+    for(auto f : faces(m)) {
+      ASSERT_LT(sym[f], k);
+      ids.push_back(sym[f]);
+    }
+    auto plain = m.add_property_map<face_descriptor, std::size_t>("f:plain", unset).first;
+    CS::hierarchical_segmentation(m, plain, CS::parameters::number_of_segments(5));
+    std::vector<std::size_t> plain_ids;
+    for(auto f : faces(m))
+      plain_ids.push_back(plain[f]);
+    const double symmetric = mirror_agreement(lm, ids, Vector_3d(1, 0, 0), 0);
+    const double alone = mirror_agreement(lm, plain_ids, Vector_3d(1, 0, 0), 0);
+    EXPECT_GE(symmetric, 0.9);
+    EXPECT_GT(symmetric, alone + 0.05);
+  }
+}
+
+TEST(Symmetric, PlaneInAnyPose)
+{
+  // The bent chair moved rigidly, with its plane moved along and given unnormalized: the result
+  // is as symmetric about the moved plane as the unmoved one is about x = 0 (the greedy merging
+  // may break ties between mirror merges differently, so the labels need not be identical).
+  SAI::Labelled_triangle_mesh lm = bent_chair(2);
+  // Rotation by 90 degrees about z and a translation: x -> y, y -> -x.
+  SAI::Labelled_triangle_mesh moved = lm;
+  for(auto& p : moved.points)
+    p = {-p[1] + 3.0, p[0] - 1.0, p[2] + 0.5};
+  Mesh mm;
+  SAI::fill_polygon_mesh(moved, mm);
+  auto b = mm.add_property_map<face_descriptor, std::size_t>("f:b", unset).first;
+  // The plane x = 0 becomes y = -1, i.e. 0 x + 2 y + 0 z + 2 = 0.
+  const auto r = CS::symmetric_segmentation(mm, Kernel::Plane_3(0, 2, 0, 2), b, CS::parameters::number_of_segments(5));
+  EXPECT_EQ(r.number_of_segments, 5u);
+  std::vector<std::size_t> lb;
+  for(auto f : faces(mm))
+    lb.push_back(b[f]);
+  EXPECT_GE(mirror_agreement(moved, lb, Vector_3d(0, 1, 0), -1), 0.9);
+  // The same plane given with the opposite orientation: as symmetric.
+  auto c = mm.add_property_map<face_descriptor, std::size_t>("f:c", unset).first;
+  CS::symmetric_segmentation(mm, Kernel::Plane_3(0, -1, 0, -1), c, CS::parameters::number_of_segments(5));
+  std::vector<std::size_t> lc;
+  for(auto f : faces(mm))
+    lc.push_back(c[f]);
+  EXPECT_GE(mirror_agreement(moved, lc, Vector_3d(0, 1, 0), -1), 0.9);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Other mesh types and maps
+
+TEST(Parameters, PolyhedronAndVertexPointMaps)
+{
+  typedef CGAL::Polyhedron_3<Kernel> Polyhedron;
+  typedef boost::graph_traits<Polyhedron>::face_descriptor poly_face;
+  const auto models = SAI::procedural_chair_set(4, 12, furniture(true));
+  std::vector<Polyhedron> polys(models.size());
+  for(std::size_t i = 0; i < models.size(); ++i)
+    SAI::fill_polygon_mesh(models[i].mesh, polys[i]);
+  std::vector<std::map<poly_face, std::size_t>> storage(models.size());
+  std::vector<boost::associative_property_map<std::map<poly_face, std::size_t>>> maps;
+  for(auto& s : storage)
+    maps.emplace_back(s);
+  const auto r = CS::consistent_segmentation(polys, maps, CS::parameters::number_of_segments(6));
+  EXPECT_EQ(r.number_of_segments, 6u);
+  for(std::size_t i = 0; i < polys.size(); ++i)
+    EXPECT_EQ(storage[i].size(), num_faces(polys[i]));
+
+  // The same with explicit vertex point maps scaled by 2: ids follow the shapes, not the units.
+  std::vector<Mesh> meshes = to_meshes(models);
+  std::vector<Mesh::Property_map<Mesh::Vertex_index, Point>> scaled;
+  for(Mesh& m : meshes) {
+    auto p = m.add_property_map<Mesh::Vertex_index, Point>("v:scaled").first;
+    for(auto v : vertices(m))
+      p[v] = Point(2 * m.point(v).x(), 2 * m.point(v).y(), 2 * m.point(v).z());
+    scaled.push_back(p);
+  }
+  std::vector<Id_map> a = id_maps(meshes);
+  CS::consistent_segmentation(meshes, a, CS::parameters::number_of_segments(6));
+  const auto ids_a = read_ids(meshes, a);
+  std::vector<Id_map> b;
+  for(Mesh& m : meshes)
+    b.push_back(m.add_property_map<face_descriptor, std::size_t>("f:scaled_id", unset).first);
+  CS::consistent_segmentation(meshes, b, CS::parameters::number_of_segments(6).vertex_point_maps(scaled));
+  const auto ids_b = read_ids(meshes, b);
+  for(std::size_t i = 0; i < meshes.size(); ++i)
+    EXPECT_GE(SAI::rand_index(ids_a[i], ids_b[i]), 0.98) << "mesh " << i;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad input
+
+TEST(BadInput, SetsAndMeshesThatCannotBeSegmented)
+{
+  const auto models = SAI::procedural_chair_set(2, 1, furniture(false));
+  std::vector<Mesh> meshes = to_meshes(models);
+  std::vector<Id_map> maps = id_maps(meshes);
+  auto untouched = [&]() {
+    for(std::size_t i = 0; i < meshes.size(); ++i)
+      for(auto f : faces(meshes[i]))
+        if(maps[i][f] != unset)
+          return false;
+    return true;
+  };
+
+  std::vector<Mesh> none;
+  std::vector<Id_map> no_maps;
+  expect_bad_input([&] { CS::consistent_segmentation(none, no_maps); }, "empty");
+  std::vector<Id_map> one_map(maps.begin(), maps.begin() + 1);
+  expect_bad_input([&] { CS::consistent_segmentation(meshes, one_map); }, "1 face segment maps for 2 meshes");
+
+  std::vector<Label_map> one_known{meshes[0].add_property_map<face_descriptor, long long>("f:k", -1).first};
+  expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, CS::parameters::known_segment_maps(one_known)); },
+                   "1 known segment maps for 2 meshes");
+  expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, CS::parameters::prior_segment_maps(one_known)); },
+                   "1 prior segment maps for 2 meshes");
+
+  // A mesh without faces among good ones.
+  std::vector<Mesh> with_empty = meshes;
+  with_empty[1].clear();
+  std::vector<Id_map> empty_maps = id_maps(with_empty);
+  expect_bad_input([&] { CS::consistent_segmentation(with_empty, empty_maps); }, "mesh 1");
+  expect_bad_input([&] { CS::consistent_segmentation(with_empty, empty_maps); }, "no faces");
+
+  // A quad and a NaN.
+  std::vector<Mesh> quad(1);
+  {
+    auto v0 = quad[0].add_vertex(Point(0, 0, 0)), v1 = quad[0].add_vertex(Point(1, 0, 0));
+    auto v2 = quad[0].add_vertex(Point(1, 1, 0)), v3 = quad[0].add_vertex(Point(0, 1, 0));
+    quad[0].add_face(v0, v1, v2, v3);
+  }
+  std::vector<Id_map> quad_maps = id_maps(quad);
+  expect_bad_input([&] { CS::consistent_segmentation(quad, quad_maps); }, "triangle");
+  std::vector<Mesh> nan = meshes;
+  nan[0].point(*vertices(nan[0]).begin()) = Point(std::nan(""), 0, 0);
+  std::vector<Id_map> nan_maps = id_maps(nan);
+  expect_bad_input([&] { CS::consistent_segmentation(nan, nan_maps); }, "finite");
+  EXPECT_TRUE(untouched());
+}
+
+TEST(BadInput, ParametersOutOfRange)
+{
+  const auto models = SAI::procedural_chair_set(2, 1, furniture(false));
+  std::vector<Mesh> meshes = to_meshes(models);
+  std::vector<Id_map> maps = id_maps(meshes);
+  namespace P = CS::parameters;
+  expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::number_of_segments(0)); }, "number_of_segments");
+  expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::number_of_oversegments(0)); },
+                   "number_of_oversegments");
+  expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::adjacency_exponent(1.5)); },
+                   "adjacency_exponent");
+  expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::adjacency_exponent(std::nan(""))); },
+                   "adjacency_exponent");
+  expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::number_of_points(3)); }, "number_of_points");
+  expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::normal_threshold(2.0)); }, "normal_threshold");
+  expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::correspondence_distance(0.0)); },
+                   "correspondence_distance");
+  expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::concavity_exponent(-1.0)); }, "concavity");
+  for(auto f : faces(meshes[0]))
+    EXPECT_EQ(maps[0][f], unset);
+
+  auto sym = meshes[0].add_property_map<face_descriptor, std::size_t>("f:sym", unset).first;
+  expect_bad_input([&] { CS::symmetric_segmentation(meshes[0], Kernel::Plane_3(0, 0, 0, 1), sym); }, "degenerate");
+  expect_bad_input(
+    [&] { CS::symmetric_segmentation(meshes[0], Kernel::Plane_3(1, 0, 0, 0), sym, P::number_of_segments(0)); },
+    "number_of_segments");
+  for(auto f : faces(meshes[0]))
+    EXPECT_EQ(sym[f], unset);
+}
+
+} // namespace
