@@ -39,9 +39,9 @@ figures of the correspondences it was built on.
 */
 struct Consistent_segmentation_result
 {
-  /// The number of segment ids (`0 .. number_of_segments - 1`). Without known labels every id is
-  /// used; with known labels, which keep their values as ids, the ids of labels that no face
-  /// carries are unused (their `meshes_of_segment` entry is empty).
+  /// The number of segment ids: ids go from 0 to this number minus one. Without known labels every
+  /// id is used; with known labels, which keep their values as ids, the ids of labels that no face
+  /// carries are unused (their entry of `meshes_of_segment` is empty).
   std::size_t number_of_segments = 0;
   /// For every segment id, the indices (in the input range) of the meshes where it occurs, in
   /// increasing order. A segment found in only some meshes is a part that the others lack.
@@ -61,7 +61,10 @@ struct Consistent_segmentation_result
   /// the target's sample points.
   double mean_alignment_rms = 0;
 
-  /// Whether segment `s` occurs in mesh `m`.
+  /// Whether a segment occurs in a mesh.
+  /// \param s a segment id
+  /// \param m the index of a mesh in the input range
+  /// \returns whether some face of mesh `m` has id `s`
   bool occurs_in(std::size_t s, std::size_t m) const
   {
     if(s >= meshes_of_segment.size())
