@@ -27,7 +27,7 @@
 //    "o20,o50,a0.1,a0.3,p2000,o50+a0.1".
 //
 //   bench_consistent_segmentation [--parts chairs16,chairs100,psb] [--classes Chair,Table,...]
-//       [--psb DIR] [--seed 1] [--edge-length 0.042] [--runs 3] [--oversegments 20]
+//       [--psb DIR] [--seed 1] [--coseg-seed 0] [--edge-length 0.042] [--runs 3] [--oversegments 20]
 //       [--adjacency-exponent 0.1] [--points 1000] [--sweep LIST] [--output FILE]
 //
 // Times exclude mesh generation and file reading. JSON to stdout (and to FILE, rewritten after
@@ -98,6 +98,7 @@ struct Coseg_parameters
 {
   std::size_t oversegments = 20;
   double adjacency = 0.1;
+  std::uint64_t seed = 0; // random_seed of consistent_segmentation
   std::size_t points = 1000;
 
   Json json() const
@@ -105,6 +106,7 @@ struct Coseg_parameters
     Json j = Json::object();
     j["number_of_oversegments"] = oversegments;
     j["adjacency_exponent"] = adjacency;
+    j["random_seed"] = seed;
     j["number_of_points"] = points;
     return j;
   }
@@ -158,6 +160,7 @@ Coseg_run run_consistent(std::vector<Mesh>& meshes, std::size_t segments, const 
                                            CS::parameters::number_of_segments(segments)
                                              .number_of_oversegments(p.oversegments)
                                              .adjacency_exponent(p.adjacency)
+                                             .random_seed(p.seed)
                                              .number_of_points(p.points)
                                              .number_of_threads(threads));
   run.seconds = seconds_since(start);
@@ -416,7 +419,7 @@ void usage(const char* name)
 {
   std::cerr << "usage: " << name
             << " [--parts chairs16,chairs100,psb] [--classes Chair,Table,...] [--psb DIR]"
-               " [--seed 1] [--edge-length 0.042] [--runs 3] [--oversegments 20]"
+               " [--seed 1] [--coseg-seed 0] [--edge-length 0.042] [--runs 3] [--oversegments 20]"
                " [--adjacency-exponent 0.1] [--points 1000] [--sweep o20,a0.1,p2000,...]"
                " [--output FILE]\n";
 }
@@ -453,6 +456,8 @@ int main(int argc, char** argv)
         output = value();
       else if(arg == "--seed")
         furniture.seed = std::stoull(value());
+      else if(arg == "--coseg-seed")
+        furniture.coseg.seed = std::stoull(value());
       else if(arg == "--edge-length")
         furniture.edge_length = std::stod(value());
       else if(arg == "--runs")

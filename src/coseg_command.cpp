@@ -34,7 +34,7 @@ struct Coseg_command_options
   std::size_t segments = 8;
   std::size_t oversegments = 20;
   std::size_t points = 1000;
-  std::size_t partners = 10;
+  std::size_t partners = 4;
   double adjacency_exponent = 0.1;
   double normal_threshold = 0.3;
   double correspondence_distance = 0.2;
@@ -444,7 +444,8 @@ void add_coseg_command(CLI::App& app, std::function<int()>& run)
                   "Number of points sampled on each mesh for the correspondences (>= 10)")
     ->capture_default_str();
   cmd->add_option("--partners", options->partners,
-                  "Number of meshes each mesh is aligned with in large sets (0: every pair)")
+                  "Number of best-aligned partners whose correspondences each mesh keeps (twice "
+                  "as many are aligned in large sets; 0: every pair)")
     ->capture_default_str();
   cmd->add_option("--adjacency-exponent", options->adjacency_exponent,
                   "Weight in [0, 1] of the mesh edges against the correspondences")

@@ -52,7 +52,8 @@ struct Consistent_segmentation_result
   std::vector<long long> segment_label;
   /// The number of over-segments of all meshes that the joint clustering started from.
   std::size_t number_of_oversegments = 0;
-  /// The number of pairs of meshes aligned to find correspondences.
+  /// The number of pairs of meshes aligned to find correspondences (the links of only some of
+  /// them are kept: see `number_of_partners`).
   std::size_t number_of_aligned_pairs = 0;
   /// The number of correspondences (links between sample points of two meshes, or of one mesh and
   /// its mirror image).
@@ -135,7 +136,7 @@ Coseg_options coseg_options(const NamedParameters& np, const std::string& who)
   o.normal_threshold = SAI::parameter_value<double>(np, snp::normal_threshold_tag, 0.3);
   o.distance_fraction = SAI::parameter_value<double>(np, snp::correspondence_distance_tag, 0.2);
   o.number_of_partners =
-    SAI::parameter_value<std::size_t>(np, snp::number_of_partners_tag, std::size_t(10));
+    SAI::parameter_value<std::size_t>(np, snp::number_of_partners_tag, std::size_t(4));
   o.refinement = SAI::parameter_value<bool>(np, snp::boundary_refinement_tag, true);
   o.seed = SAI::parameter_value<std::uint64_t>(np, CGAL::internal_np::random_seed, std::uint64_t(0));
   o.number_of_threads =
@@ -215,13 +216,15 @@ The method works in two stages on the faces of all meshes:
    area-normalized cut of `hierarchical_segmentation()` (links between its connected components,
    prior boundaries made cheaper);
 2. `number_of_points` points are sampled on every mesh; every pair of meshes (for sets larger
-   than `number_of_partners` + 1, the pairs of every mesh with the `number_of_partners` meshes of
-   most similar shape distribution, so that a mesh may also be aligned with others that chose it)
-   is aligned by the similarity transform of least RMS distance between up to 400 of their
-   samples (principal frames, the 24 orientations of their axes, ICP with scale from each); every
-   sample is then linked to the closest, among its 8 nearest samples of the other mesh, whose
-   normal agrees (dot product above `normal_threshold`) within `correspondence_distance` of the
-   other mesh's bounding-box diagonal, in both directions. The over-segments of all meshes are then merged greedily, always
+   than 2 `number_of_partners` + 1, the pairs of every mesh with the 2 `number_of_partners`
+   meshes of most similar shape distribution, so that a mesh may also be aligned with others that
+   chose it) is aligned by the similarity transform of least RMS distance between up to 400 of
+   their samples (principal frames, the 24 orientations of their axes, ICP with scale from each);
+   only the pairs that are among the `number_of_partners` best aligned (least RMS distance) of one
+   of their meshes are kept. For each kept pair, every sample is linked to the closest, among its
+   8 nearest samples of the other mesh, whose normal agrees (dot product above
+   `normal_threshold`) within `correspondence_distance` of the other mesh's bounding-box
+   diagonal, in both directions. The over-segments of all meshes are then merged greedily, always
    the pair that lowers
    \f$E = E_{adj}^{\alpha} E_{corr}^{1-\alpha}\f$ the most, where
    \f$E_{adj} = \sum_S \mathrm{cut}(S)/\mathrm{area}(S)\f$ is the area-normalized cut of the mesh
@@ -283,11 +286,13 @@ results that do not depend on the number of threads.
     \cgalParamDefault{`1000`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_partners}
-    \cgalParamDescription{for sets of more than `number_of_partners` + 1 meshes, the number of
-      meshes each mesh is aligned with (those of most similar shape distribution); 0 aligns every
+    \cgalParamDescription{the number of best-aligned partners whose correspondences each mesh keeps
+      (a pair is kept when it is among the best of one of its meshes); in sets of more than
+      2 `number_of_partners` + 1 meshes, each mesh is aligned only with the
+      2 `number_of_partners` meshes of most similar shape distribution. 0 aligns and keeps every
       pair}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`10`}
+    \cgalParamDefault{`4`}
   \cgalParamNEnd
   \cgalParamNBegin{normal_threshold}
     \cgalParamDescription{two samples correspond only when the dot product of their normals, after

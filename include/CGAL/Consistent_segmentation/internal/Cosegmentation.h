@@ -73,7 +73,10 @@ struct Coseg_options
   std::size_t number_of_points = 1000;
   double normal_threshold = 0.3;
   double distance_fraction = 0.2;
-  std::size_t number_of_partners = 10; // 0: every pair
+  // Each mesh keeps the correspondences of its `number_of_partners` best-aligned partners; in
+  // sets of more than 2 number_of_partners + 1 meshes, only the 2 number_of_partners meshes of
+  // closest shape distribution are aligned with it. 0: every pair aligned and kept.
+  std::size_t number_of_partners = 4;
   std::size_t refinement_interval = 12;
   bool refinement = true;
   std::uint64_t seed = 0;
@@ -818,7 +821,8 @@ inline Coseg_result cosegment(std::vector<Coseg_mesh>& meshes, const Coseg_optio
     });
   }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  if(o.number_of_partners == 0 || m <= o.number_of_partners + 1) {
+  const std::size_t candidates = 2 * o.number_of_partners;
+  if(o.number_of_partners == 0 || m <= candidates + 1) {
     for(std::uint32_t i = 0; i < m; ++i)
       for(std::uint32_t j = i + 1; j < m; ++j)
         pairs.emplace_back(i, j);
@@ -837,7 +841,7 @@ inline Coseg_result cosegment(std::vector<Coseg_mesh>& meshes, const Coseg_optio
           by_distance.emplace_back(d, j);
         }
       std::sort(by_distance.begin(), by_distance.end());
-      for(std::size_t k = 0; k < o.number_of_partners && k < by_distance.size(); ++k)
+      for(std::size_t k = 0; k < candidates && k < by_distance.size(); ++k)
         chosen.emplace((std::min)(i, by_distance[k].second), (std::max)(i, by_distance[k].second));
     }
     pairs.assign(chosen.begin(), chosen.end());
@@ -884,6 +888,24 @@ inline Coseg_result cosegment(std::vector<Coseg_mesh>& meshes, const Coseg_optio
       link_samples(mirrored, std::uint32_t(i), SAI::Similarity_3d(), samples[i], trees[i],
                    std::uint32_t(i), o, links[pairs.size() + i]);
     });
+  }
+  // Only the pairs among the `number_of_partners` best aligned of one of their meshes keep their
+  // links: a poor alignment (other poses, other proportions) gives misleading correspondences.
+  if(o.number_of_partners > 0) {
+    std::vector<std::vector<std::pair<double, std::size_t>>> of_mesh(m);
+    for(std::size_t p = 0; p < pairs.size(); ++p) {
+      of_mesh[pairs[p].first].emplace_back(pair_rms[p], p);
+      of_mesh[pairs[p].second].emplace_back(pair_rms[p], p);
+    }
+    std::vector<char> keep(pairs.size(), 0);
+    for(auto& list : of_mesh) {
+      std::sort(list.begin(), list.end());
+      for(std::size_t k = 0; k < o.number_of_partners && k < list.size(); ++k)
+        keep[list[k].second] = 1;
+    }
+    for(std::size_t p = 0; p < pairs.size(); ++p)
+      if(!keep[p])
+        std::vector<Correspondence>().swap(links[p]);
   }
   report(0.6);
   result.number_of_aligned_pairs = pairs.size();
