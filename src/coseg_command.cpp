@@ -40,6 +40,8 @@ struct Coseg_command_options
   double correspondence_distance = 0.2;
   double concavity_exponent = 10;
   double prior_factor = 10;
+  double link_distance = 0.1;
+  double link_factor = 0.01;
   unsigned int seed = 0;
   std::size_t threads = 0;
   bool no_refinement = false;
@@ -306,6 +308,8 @@ int run_coseg(const Coseg_command_options& o)
                     .correspondence_distance(o.correspondence_distance)
                     .concavity_exponent(o.concavity_exponent)
                     .prior_boundary_factor(o.prior_factor)
+                    .component_link_distance(o.link_distance)
+                    .component_link_factor(o.link_factor)
                     .boundary_refinement(!o.no_refinement)
                     .random_seed(o.seed)
                     .number_of_threads(o.threads)
@@ -377,6 +381,8 @@ int run_coseg(const Coseg_command_options& o)
     parameters["correspondence_distance"] = o.correspondence_distance;
     parameters["concavity_exponent"] = o.concavity_exponent;
     parameters["prior_factor"] = o.prior_factor;
+    parameters["link_distance"] = o.link_distance;
+    parameters["link_factor"] = o.link_factor;
     parameters["boundary_refinement"] = !o.no_refinement;
     parameters["seed"] = o.seed;
     parameters["symmetry_plane"] =
@@ -462,6 +468,13 @@ void add_coseg_command(CLI::App& app, std::function<int()>& run)
     ->capture_default_str();
   cmd->add_option("--prior-factor", options->prior_factor,
                   "Cut-cost divisor on prior boundaries (>= 1)")
+    ->capture_default_str();
+  cmd->add_option("--link-distance", options->link_distance,
+                  "Link faces of different components of a mesh closer than this fraction of its "
+                  "bounding-box diagonal")
+    ->capture_default_str();
+  cmd->add_option("--link-factor", options->link_factor,
+                  "Cost of a component link relative to the mean edge cut cost")
     ->capture_default_str();
   cmd->add_flag("--no-refinement", options->no_refinement, "Skip the boundary refinement");
   cmd->add_option("--seed", options->seed, "Random seed (same seed, same result)")->capture_default_str();
