@@ -6,6 +6,7 @@
 
 /// \file consistent_segmentation.h
 
+#include <CGAL/Consistent_segmentation/hierarchical_segmentation.h>
 #include <CGAL/Consistent_segmentation/internal/Cosegmentation.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/parameters.h>
@@ -126,8 +127,12 @@ Coseg_options coseg_options(const NamedParameters& np, const std::string& who)
   namespace SAI = CGAL::Shape_analysis::internal;
   namespace snp = CGAL::Shape_analysis::internal_np;
   Coseg_options o;
-  o.number_of_segments =
-    SAI::parameter_value<std::size_t>(np, snp::number_of_segments_tag, std::size_t(8));
+  // Concavity, links, prior factor, refinement and the number of segments as for
+  // hierarchical_segmentation(); the progress is reported for the whole computation.
+  o.stage_one = segmentation_options(np);
+  o.number_of_segments = o.stage_one.number_of_segments;
+  o.progress = o.stage_one.progress;
+  o.stage_one.progress = {};
   o.number_of_oversegments =
     SAI::parameter_value<std::size_t>(np, snp::number_of_oversegments_tag, std::size_t(20));
   o.alpha = SAI::parameter_value<double>(np, snp::adjacency_exponent_tag, 0.1);
@@ -137,20 +142,9 @@ Coseg_options coseg_options(const NamedParameters& np, const std::string& who)
   o.distance_fraction = SAI::parameter_value<double>(np, snp::correspondence_distance_tag, 0.2);
   o.number_of_partners =
     SAI::parameter_value<std::size_t>(np, snp::number_of_partners_tag, std::size_t(4));
-  o.refinement = SAI::parameter_value<bool>(np, snp::boundary_refinement_tag, true);
   o.seed = SAI::parameter_value<std::uint64_t>(np, CGAL::internal_np::random_seed, std::uint64_t(0));
   o.number_of_threads =
     SAI::parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
-  o.progress = SAI::parameter_value<std::function<void(double)>>(np, snp::progress_callback_tag,
-                                                                 std::function<void(double)>());
-  o.stage_one.concavity_exponent = SAI::parameter_value<double>(np, snp::concavity_exponent_tag, 10.0);
-  o.stage_one.prior_boundary_factor =
-    SAI::parameter_value<double>(np, snp::prior_boundary_factor_tag, 10.0);
-  o.stage_one.component_link_distance =
-    SAI::parameter_value<double>(np, snp::component_link_distance_tag, 0.1);
-  o.stage_one.component_link_factor =
-    SAI::parameter_value<double>(np, snp::component_link_factor_tag, 0.01);
-  o.stage_one.boundary_refinement = o.refinement;
   check_coseg_options(o, who);
   return o;
 }

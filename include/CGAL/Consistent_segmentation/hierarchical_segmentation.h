@@ -29,6 +29,30 @@ namespace Consistent_segmentation {
 namespace parameters = CGAL::Shape_analysis::parameters;
 using CGAL::Shape_analysis::Bad_input;
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The options of the hierarchical segmentation from named parameters (not checked).
+template <typename NamedParameters>
+Segmentation_options segmentation_options(const NamedParameters& np)
+{
+  namespace SAI = CGAL::Shape_analysis::internal;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  Segmentation_options o;
+  o.number_of_segments = SAI::parameter_value<std::size_t>(np, snp::number_of_segments_tag, std::size_t(8));
+  o.concavity_exponent = SAI::parameter_value<double>(np, snp::concavity_exponent_tag, 10.0);
+  o.prior_boundary_factor = SAI::parameter_value<double>(np, snp::prior_boundary_factor_tag, 10.0);
+  o.component_link_distance = SAI::parameter_value<double>(np, snp::component_link_distance_tag, 0.1);
+  o.component_link_factor = SAI::parameter_value<double>(np, snp::component_link_factor_tag, 0.01);
+  o.boundary_refinement = SAI::parameter_value<bool>(np, snp::boundary_refinement_tag, true);
+  o.progress = SAI::parameter_value<std::function<void(double)>>(np, snp::progress_callback_tag,
+                                                                 std::function<void(double)>());
+  return o;
+}
+
+} // namespace internal
+/// \endcond
+
 /*!
 \ingroup PkgConsistentSegmentationRef
 
@@ -166,21 +190,7 @@ std::size_t hierarchical_segmentation(const TriangleMesh& tm, FaceSegmentMap fac
   SA::internal::check_triangle_mesh(tm, vpm, to_vector, who);
   const std::size_t n = fim.size();
 
-  internal::Segmentation_options options;
-  options.number_of_segments =
-    SA::internal::parameter_value<std::size_t>(np, snp::number_of_segments_tag, std::size_t(8));
-  options.concavity_exponent =
-    SA::internal::parameter_value<double>(np, snp::concavity_exponent_tag, 10.0);
-  options.prior_boundary_factor =
-    SA::internal::parameter_value<double>(np, snp::prior_boundary_factor_tag, 10.0);
-  options.component_link_distance =
-    SA::internal::parameter_value<double>(np, snp::component_link_distance_tag, 0.1);
-  options.component_link_factor =
-    SA::internal::parameter_value<double>(np, snp::component_link_factor_tag, 0.01);
-  options.boundary_refinement =
-    SA::internal::parameter_value<bool>(np, snp::boundary_refinement_tag, true);
-  options.progress = SA::internal::parameter_value<std::function<void(double)>>(
-    np, snp::progress_callback_tag, std::function<void(double)>());
+  const internal::Segmentation_options options = internal::segmentation_options(np);
   internal::check_options(options, n, who);
 
   SA::internal::Dual_graph graph;

@@ -13,6 +13,7 @@
 #include <CGAL/Shape_analysis/internal/Mesh_checks.h>
 #include <CGAL/Shape_analysis/internal/Random.h>
 #include <CGAL/Shape_analysis/internal/Similarity_alignment.h>
+#include <CGAL/Shape_analysis/internal/Triangle_sampling.h>
 
 #include <CGAL/Aff_transformation_3.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -136,25 +137,14 @@ Surface_triangles surface_triangles(const TriangleMesh& tm, VertexPointMap vpm,
 inline std::vector<SAI::Vector_3d> sample_triangles(const Surface_triangles& s, std::size_t n,
                                                     SAI::Random_stream& rng)
 {
-  std::vector<double> cumulative(s.areas.size());
-  double total = 0;
-  for(std::size_t f = 0; f < s.areas.size(); ++f) {
-    total += s.areas[f] * s.emphasis[f];
-    cumulative[f] = total;
-  }
+  std::vector<double> weights(s.areas.size());
+  for(std::size_t f = 0; f < s.areas.size(); ++f)
+    weights[f] = s.areas[f] * s.emphasis[f]; // zero exactly for zero-area triangles
+  const SAI::Weighted_triangle_sampler sampler(weights);
   std::vector<SAI::Vector_3d> points;
   points.reserve(n);
-  for(std::size_t i = 0; i < n; ++i) {
-    const double u = rng.uniform() * total;
-    std::size_t f = std::size_t(std::upper_bound(cumulative.begin(), cumulative.end(), u) -
-                                cumulative.begin());
-    f = (std::min)(f, cumulative.size() - 1);
-    while(f > 0 && s.areas[f] == 0) // never a zero-area triangle
-      --f;
-    const double r1 = std::sqrt(rng.uniform()), r2 = rng.uniform();
-    const auto& c = s.corners[f];
-    points.push_back(c[0] * (1 - r1) + c[1] * (r1 * (1 - r2)) + c[2] * (r1 * r2));
-  }
+  for(std::size_t i = 0; i < n; ++i)
+    points.push_back(SAI::Weighted_triangle_sampler::point_in(s.corners[sampler.triangle(rng)], rng));
   return points;
 }
 

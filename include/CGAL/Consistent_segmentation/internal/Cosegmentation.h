@@ -32,6 +32,7 @@
 #include <CGAL/Shape_analysis/internal/Point_tree.h>
 #include <CGAL/Shape_analysis/internal/Random.h>
 #include <CGAL/Shape_analysis/internal/Similarity_alignment.h>
+#include <CGAL/Shape_analysis/internal/Triangle_sampling.h>
 
 #include <algorithm>
 #include <array>
@@ -78,10 +79,9 @@ struct Coseg_options
   // closest shape distribution are aligned with it. 0: every pair aligned and kept.
   std::size_t number_of_partners = 4;
   std::size_t refinement_interval = 12;
-  bool refinement = true;
   std::uint64_t seed = 0;
   std::size_t number_of_threads = 0;
-  Segmentation_options stage_one;   // concavity, links, prior factor, stage-one refinement
+  Segmentation_options stage_one;   // concavity, links, prior factor, refinement (both stages)
   std::function<void(double)> progress;
 };
 
@@ -132,14 +132,7 @@ inline std::vector<std::size_t> oversegment(SAI::Dual_graph& g, const Coseg_mesh
     // segment_dual_graph adds the links itself: give it the unlinked graph.
     return segment_dual_graph(g, so, m.prior.empty() ? nullptr : &m.prior);
   }
-  SAI::Component_link_options link_options;
-  link_options.link_distance = o.component_link_distance;
-  link_options.factor = o.component_link_factor;
-  SAI::add_component_links(g, link_options);
-  if(!m.prior.empty())
-    for(std::size_t e = 0; e < g.number_of_edges(); ++e)
-      if(m.prior[g.edge_source[e]] != m.prior[g.edge_target[e]])
-        g.cut_cost[e] /= o.prior_boundary_factor;
+  add_links_and_prior(g, o, m.prior.empty() ? nullptr : &m.prior);
   SAI::Normalized_cut_clustering clustering(g.node_size, g.edge_source, g.edge_target, g.cut_cost);
   // Known faces merged by label; unknown faces stay single.
   std::vector<long long> group(n);
@@ -182,23 +175,12 @@ inline Surface_sample sample_surface(const Coseg_mesh& m, std::size_t count, std
 {
   Surface_sample s;
   const SAI::Dual_graph& g = m.graph;
-  std::vector<double> cumulative(g.number_of_nodes());
-  double total = 0;
-  for(std::size_t i = 0; i < cumulative.size(); ++i) {
-    total += g.node_size[i];
-    cumulative[i] = total;
-  }
+  const SAI::Weighted_triangle_sampler sampler(g.node_size);
   SAI::Random_stream rng(SAI::Random_stream::mix(seed ^ 0x436F736567ull), index);
   SAI::Vector_3d lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for(std::size_t k = 0; k < count; ++k) {
-    const double u = rng.uniform() * total;
-    std::size_t f = std::size_t(std::upper_bound(cumulative.begin(), cumulative.end(), u) - cumulative.begin());
-    f = (std::min)(f, cumulative.size() - 1);
-    while(f > 0 && g.node_size[f] == 0)
-      --f;
-    const double r1 = std::sqrt(rng.uniform()), r2 = rng.uniform();
-    const auto& c = m.triangles[f];
-    const SAI::Vector_3d p = c[0] * (1 - r1) + c[1] * (r1 * (1 - r2)) + c[2] * (r1 * r2);
+    const std::size_t f = sampler.triangle(rng);
+    const SAI::Vector_3d p = SAI::Weighted_triangle_sampler::point_in(m.triangles[f], rng);
     s.points.push_back(p);
     s.normals.push_back(g.node_normal[f]);
     s.node.push_back(static_cast<std::uint32_t>(f));
@@ -956,7 +938,7 @@ inline Coseg_result cosegment(std::vector<Coseg_mesh>& meshes, const Coseg_optio
       ++result.number_of_correspondences;
     }
 
-  merging.run(o.number_of_segments, o.refinement_interval, o.refinement,
+  merging.run(o.number_of_segments, o.refinement_interval, o.stage_one.boundary_refinement,
               [&](double f) { report(0.6 + 0.4 * f); });
 
   // Segment ids: known labels keep their value; the other segments follow, by decreasing area.

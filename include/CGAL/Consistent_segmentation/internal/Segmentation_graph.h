@@ -58,10 +58,10 @@ inline void check_options(const Segmentation_options& o, std::size_t number_of_f
 
 using CGAL::Shape_analysis::internal::number_by_size;
 
-// Segments the dual graph `g` (modified: prior boundaries and links are applied to it).
-inline std::vector<std::size_t> segment_dual_graph(CGAL::Shape_analysis::internal::Dual_graph& g,
-                                                   const Segmentation_options& o,
-                                                   const std::vector<long long>* prior_labels)
+// Adds the links between the components of `g` and makes the boundaries of the prior labels
+// (if any) cheaper to cut.
+inline void add_links_and_prior(CGAL::Shape_analysis::internal::Dual_graph& g, const Segmentation_options& o,
+                                const std::vector<long long>* prior_labels)
 {
   namespace SAI = CGAL::Shape_analysis::internal;
   SAI::Component_link_options link_options;
@@ -74,6 +74,15 @@ inline std::vector<std::size_t> segment_dual_graph(CGAL::Shape_analysis::interna
     for(std::size_t e = 0; e < g.number_of_edges(); ++e)
       if((*prior_labels)[g.edge_source[e]] != (*prior_labels)[g.edge_target[e]])
         g.cut_cost[e] /= o.prior_boundary_factor;
+}
+
+// Segments the dual graph `g` (modified: prior boundaries and links are applied to it).
+inline std::vector<std::size_t> segment_dual_graph(CGAL::Shape_analysis::internal::Dual_graph& g,
+                                                   const Segmentation_options& o,
+                                                   const std::vector<long long>* prior_labels)
+{
+  namespace SAI = CGAL::Shape_analysis::internal;
+  add_links_and_prior(g, o, prior_labels);
 
   SAI::Normalized_cut_clustering clustering(g.node_size, g.edge_source, g.edge_target, g.cut_cost);
   const std::size_t n = g.number_of_nodes();
