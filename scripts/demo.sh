@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job on packaged data: segments meshes from Debian's libcgal-demo into parts, computes
 # the partition function of the camel and segments the elephant along its most consistent cuts,
-# segments four animals consistently and the cow symmetrically;
+# segments four animals consistently and the cow symmetrically, finds the cow's symmetry planes,
+# symmetrizes it and exaggerates its asymmetries, and mirrors colours across the camel's plane;
 # writes coloured meshes (open them in MeshLab or CloudCompare), Princeton-benchmark label files,
 # edge values and JSON reports to build/demo/. Installs missing Debian packages and builds the
 # tool first.
@@ -42,6 +43,19 @@ segment blobby_3cc 3
 "$tool" coseg "$data/cow.off" --segments 7 --symmetry-plane 0,0,1,0 \
   --output-dir "$out/coseg_symmetric" --report "$out/coseg_symmetric.json" --verbose
 
+# Symmetry (Surface_mesh_symmetrization): the cow's reflective planes (faces coloured by their
+# support), the cow made symmetric with its symmetric map, its asymmetries tripled, and the
+# colours of the camel's partition function copied from one side of its plane to the other.
+"$tool" symmetry detect "$data/cow.off" --report "$out/cow_symmetry.json" \
+  --output "$out/cow_symmetry_support.ply" --verbose
+"$tool" symmetry symmetrize "$data/cow.off" --output "$out/cow_symmetric.off" \
+  --map "$out/cow_symmetric_map.txt" --report "$out/cow_symmetric.json" --verbose
+"$tool" symmetry enhance "$data/cow.off" --symmetric "$out/cow_symmetric.off" --amount -2 \
+  --output "$out/cow_asymmetry_tripled.off" --verbose
+"$tool" symmetry transfer "$data/camel.off" --colors "$out/camel_partition.ply" \
+  --output "$out/camel_partition_mirrored.ply" --report "$out/camel_partition_mirrored.json" --verbose
+
 echo
 echo "Coloured segmentations (per-face colours) and partition functions (per-vertex colours) in $out:"
 ls -1 "$out"/*.ply "$out"/coseg/*.ply "$out"/coseg_symmetric/*.ply
+echo "Symmetrized and enhanced meshes: $out/cow_symmetric.off, $out/cow_asymmetry_tripled.off"

@@ -18,6 +18,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -382,9 +383,11 @@ void put_binary(std::ostream& out, T value)
 }
 } // namespace
 
-void write_labelled_ply(std::ostream& out, const std::vector<Point_3>& points,
-                        const std::vector<std::array<std::size_t, 3>>& triangles,
-                        const std::vector<std::size_t>& labels)
+void write_face_ply(std::ostream& out, const std::vector<Point_3>& points,
+                    const std::vector<std::array<std::size_t, 3>>& triangles,
+                    const std::function<std::array<unsigned char, 3>(std::size_t)>& colour,
+                    const std::string& property, bool integer_property,
+                    const std::function<double(std::size_t)>& value)
 {
   out << "ply\nformat binary_little_endian 1.0\n"
       << "comment written by shape_analysis (CGAL Global Shape Analysis)\n"
@@ -393,7 +396,7 @@ void write_labelled_ply(std::ostream& out, const std::vector<Point_3>& points,
       << "element face " << triangles.size() << "\n"
       << "property list uchar int vertex_indices\n"
       << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
-      << "property int segment\n"
+      << "property " << (integer_property ? "int " : "float ") << property << "\n"
       << "end_header\n";
   for(const Point_3& p : points) {
     put_binary(out, CGAL::to_double(p.x()));
@@ -404,9 +407,54 @@ void write_labelled_ply(std::ostream& out, const std::vector<Point_3>& points,
     put_binary(out, static_cast<unsigned char>(3));
     for(std::size_t v : triangles[i])
       put_binary(out, static_cast<std::int32_t>(v));
-    const auto c = label_colour(labels[i]);
+    const auto c = colour(i);
     out.write(reinterpret_cast<const char*>(c.data()), 3);
-    put_binary(out, static_cast<std::int32_t>(labels[i]));
+    if(integer_property)
+      put_binary(out, static_cast<std::int32_t>(value(i)));
+    else
+      put_binary(out, static_cast<float>(value(i)));
+  }
+}
+
+void write_labelled_ply(std::ostream& out, const std::vector<Point_3>& points,
+                        const std::vector<std::array<std::size_t, 3>>& triangles,
+                        const std::vector<std::size_t>& labels)
+{
+  write_face_ply(
+    out, points, triangles, [&](std::size_t f) { return label_colour(labels[f]); }, "segment", true,
+    [&](std::size_t f) { return static_cast<double>(labels[f]); });
+}
+
+void write_off(std::ostream& out, const std::vector<Point_3>& points,
+               const std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  out << "OFF\n" << points.size() << ' ' << triangles.size() << " 0\n";
+  out << std::setprecision(17);
+  for(const Point_3& p : points)
+    out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  for(const auto& t : triangles)
+    out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+}
+
+double bounding_box_diagonal(const std::vector<Point_3>& points)
+{
+  if(points.empty())
+    return 0;
+  const CGAL::Bbox_3 box = CGAL::bbox_3(points.begin(), points.end());
+  const double dx = box.xmax() - box.xmin(), dy = box.ymax() - box.ymin(),
+               dz = box.zmax() - box.zmin();
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+void require_extension(const std::string& path, const std::string& extension, const std::string& what)
+{
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if(ext != extension) {
+    std::string format = extension.substr(1);
+    std::transform(format.begin(), format.end(), format.begin(), [](unsigned char c) { return char(std::toupper(c)); });
+    throw Usage_error("the " + what + " is written as " + format + ": name it '" + extension +
+                      "' (got '" + path + "')");
   }
 }
 

@@ -114,11 +114,30 @@ private:
 // Distinct colours for labels 0, 1, 2, ... (golden-angle hues).
 std::array<unsigned char, 3> label_colour(std::size_t label);
 
+// Binary PLY of a triangle soup, coordinates in double precision, faces in the given order, with
+// a colour per face and one scalar face property named `property` (int or float).
+void write_face_ply(std::ostream& out, const std::vector<Point_3>& points,
+                    const std::vector<std::array<std::size_t, 3>>& triangles,
+                    const std::function<std::array<unsigned char, 3>(std::size_t)>& colour,
+                    const std::string& property, bool integer_property,
+                    const std::function<double(std::size_t)>& value);
+
 // Binary PLY of a triangle soup with per-face colours from `labels` and an integer face
 // property `segment`; coordinates in double precision; faces in the given order.
 void write_labelled_ply(std::ostream& out, const std::vector<Point_3>& points,
                         const std::vector<std::array<std::size_t, 3>>& triangles,
                         const std::vector<std::size_t>& labels);
+
+// OFF of a triangle soup, coordinates with every digit of a double; faces in the given order.
+void write_off(std::ostream& out, const std::vector<Point_3>& points,
+               const std::vector<std::array<std::size_t, 3>>& triangles);
+
+// The diagonal of the bounding box of `points` (0 when empty).
+double bounding_box_diagonal(const std::vector<Point_3>& points);
+
+// Checks that `path` ends with `extension` (case-insensitive, e.g. ".off"); Usage_error naming
+// `what` otherwise.
+void require_extension(const std::string& path, const std::string& extension, const std::string& what);
 
 // One label per line.
 void write_labels(std::ostream& out, const std::vector<std::size_t>& labels);
@@ -185,6 +204,7 @@ void add_segment_command(CLI::App& app, std::function<int()>& run);
 void add_register_command(CLI::App& app, std::function<int()>& run);
 void add_partition_commands(CLI::App& app, std::function<int()>& run); // partition, partition-segment
 void add_coseg_command(CLI::App& app, std::function<int()>& run);
+void add_symmetry_command(CLI::App& app, std::function<int()>& run); // symmetry detect|symmetrize|enhance|transfer
 
 } // namespace shape_analysis_cli
 

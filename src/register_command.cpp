@@ -36,28 +36,6 @@ struct Register_options
   bool verbose = false;
 };
 
-// OFF of a triangle soup, coordinates with every digit of a double; faces in the given order.
-void write_off(std::ostream& out, const std::vector<Point_3>& points,
-               const std::vector<std::array<std::size_t, 3>>& triangles)
-{
-  out << "OFF\n" << points.size() << ' ' << triangles.size() << " 0\n";
-  out << std::setprecision(17);
-  for(const Point_3& p : points)
-    out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-  for(const auto& t : triangles)
-    out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-}
-
-double bounding_box_diagonal(const std::vector<Point_3>& points)
-{
-  if(points.empty())
-    return 0;
-  const CGAL::Bbox_3 box = CGAL::bbox_3(points.begin(), points.end());
-  const double dx = box.xmax() - box.xmin(), dy = box.ymax() - box.ymin(),
-               dz = box.zmax() - box.zmin();
-  return std::sqrt(dx * dx + dy * dy + dz * dz);
-}
-
 int run_register(const Register_options& o)
 {
   Stopwatch total;
@@ -68,12 +46,7 @@ int run_register(const Register_options& o)
   outputs.add_input(o.source);
   outputs.add_input(o.target);
   if(!o.output_off.empty()) {
-    std::string ext = std::filesystem::path(o.output_off).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    if(ext != ".off")
-      throw Usage_error("the aligned mesh is written as OFF: name it '.off' (got '" +
-                        o.output_off + "')");
+    require_extension(o.output_off, ".off", "aligned mesh");
     outputs.add_output(o.output_off, "aligned mesh");
   }
   outputs.add_optional_output(o.report, "report");

@@ -37,6 +37,7 @@ int main(int argc, char** argv)
   add_register_command(app, run);
   add_partition_commands(app, run);
   add_coseg_command(app, run);
+  add_symmetry_command(app, run);
 
   try {
     app.parse(argc, argv);

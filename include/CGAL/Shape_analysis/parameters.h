@@ -53,7 +53,20 @@ namespace internal_np {
   X(correspondence_distance_t, correspondence_distance_tag, correspondence_distance) \
   X(vertex_point_maps_t, vertex_point_maps_tag, vertex_point_maps)                   \
   X(known_segment_maps_t, known_segment_maps_tag, known_segment_maps)                \
-  X(prior_segment_maps_t, prior_segment_maps_tag, prior_segment_maps)
+  X(prior_segment_maps_t, prior_segment_maps_tag, prior_segment_maps)                   \
+  X(maximum_number_of_symmetries_t, maximum_number_of_symmetries_tag, maximum_number_of_symmetries) \
+  X(minimum_support_t, minimum_support_tag, minimum_support)                         \
+  X(support_tolerance_t, support_tolerance_tag, support_tolerance)                   \
+  X(support_weighting_t, support_weighting_tag, support_weighting)                   \
+  X(shape_weight_t, shape_weight_tag, shape_weight)                                  \
+  X(displacement_weight_t, displacement_weight_tag, displacement_weight)             \
+  X(number_of_levels_t, number_of_levels_tag, number_of_levels)                      \
+  X(coarsest_level_size_t, coarsest_level_size_tag, coarsest_level_size)             \
+  X(symmetry_tolerance_t, symmetry_tolerance_tag, symmetry_tolerance)                \
+  X(final_symmetry_weight_t, final_symmetry_weight_tag, final_symmetry_weight)       \
+  X(transfer_mode_t, transfer_mode_tag, transfer_mode)                               \
+  X(source_side_t, source_side_tag, source_side)                                     \
+  X(symmetric_map_t, symmetric_map_tag, symmetric_map)
 
 #define CGAL_SHAPE_ANALYSIS_DECLARE_TAG(X, Y, Z) enum X { Y };
 CGAL_SHAPE_ANALYSIS_NAMED_PARAMETER_LIST(CGAL_SHAPE_ANALYSIS_DECLARE_TAG)

@@ -46,7 +46,8 @@ public:
       return false;
     double best = max_squared_distance;
     std::uint32_t best_k = (std::numeric_limits<std::uint32_t>::max)();
-    search(0, m_points.size(), 0, q, best, best_k);
+    Vector_3d offset(0.0);
+    search(0, m_points.size(), 0, q, best, best_k, offset, 0.0);
     if(best_k == (std::numeric_limits<std::uint32_t>::max)())
       return false;
     id = m_ids[best_k];
@@ -54,25 +55,41 @@ public:
     return true;
   }
 
-  // The ids of the (at most) `k` nearest points to `q`, nearest first, with their squared
-  // distances, in `result` (cleared first).
+  // The ids of the (at most) `k` nearest points to `q` closer than sqrt(max_squared_distance)
+  // (every point by default), nearest first, with their squared distances, in `result` (cleared
+  // first).
   void k_nearest(const Vector_3d& q, std::size_t k,
-                 std::vector<std::pair<double, std::uint32_t>>& result) const
+                 std::vector<std::pair<double, std::uint32_t>>& result,
+                 double max_squared_distance = std::numeric_limits<double>::infinity()) const
   {
     result.clear();
     if(m_points.empty() || k == 0)
       return;
-    search_k(0, m_points.size(), 0, q, k, result);
+    Vector_3d offset(0.0);
+    search_k(0, m_points.size(), 0, q, k, result, offset, 0.0, max_squared_distance);
+    if(max_squared_distance < std::numeric_limits<double>::infinity())
+      result.erase(std::remove_if(result.begin(), result.end(),
+                                  [&](const std::pair<double, std::uint32_t>& r) {
+                                    return !(r.first < max_squared_distance);
+                                  }),
+                   result.end());
     std::sort(result.begin(), result.end());
     for(auto& r : result)
       r.second = m_ids[r.second];
   }
 
 private:
-  // `heap` is a max-heap on (squared distance, position) of the best candidates so far.
+  // `heap` is a max-heap on (squared distance, position) of the best candidates so far. `offset`
+  // holds, per axis, how far q lies outside the current cell (0 inside) and `cell_distance` the
+  // squared length of `offset`: a lower bound of the squared distance to any point of the cell
+  // (incremental distance, as in Arya and Mount's ANN), so that a cell is skipped whenever it
+  // cannot hold a closer point.
   void search_k(std::size_t begin, std::size_t end, int depth, const Vector_3d& q, std::size_t k,
-                std::vector<std::pair<double, std::uint32_t>>& heap) const
+                std::vector<std::pair<double, std::uint32_t>>& heap, Vector_3d& offset,
+                double cell_distance, double max_squared_distance) const
   {
+    if(!(cell_distance < max_squared_distance))
+      return;
     auto offer = [&](std::uint32_t position) {
       const std::pair<double, std::uint32_t> c((m_points[position] - q).squared_length(), position);
       if(heap.size() < k) {
@@ -96,14 +113,18 @@ private:
     const double diff = q[axis] - m_points[position][axis];
     const bool left_first = diff < 0;
     if(left_first)
-      search_k(begin, mid, depth + 1, q, k, heap);
+      search_k(begin, mid, depth + 1, q, k, heap, offset, cell_distance, max_squared_distance);
     else
-      search_k(mid + 1, end, depth + 1, q, k, heap);
-    if(heap.size() < k || diff * diff <= heap.front().first) {
+      search_k(mid + 1, end, depth + 1, q, k, heap, offset, cell_distance, max_squared_distance);
+    const double old = offset[axis];
+    const double far_distance = cell_distance - old * old + diff * diff;
+    if(heap.size() < k || far_distance <= heap.front().first) {
+      offset[axis] = diff;
       if(left_first)
-        search_k(mid + 1, end, depth + 1, q, k, heap);
+        search_k(mid + 1, end, depth + 1, q, k, heap, offset, far_distance, max_squared_distance);
       else
-        search_k(begin, mid, depth + 1, q, k, heap);
+        search_k(begin, mid, depth + 1, q, k, heap, offset, far_distance, max_squared_distance);
+      offset[axis] = old;
     }
   }
 
@@ -121,8 +142,9 @@ private:
     build(mid + 1, end, depth + 1);
   }
 
+  // Nearest point, with the same incremental cell distance as `search_k()`.
   void search(std::size_t begin, std::size_t end, int depth, const Vector_3d& q, double& best,
-              std::uint32_t& best_k) const
+              std::uint32_t& best_k, Vector_3d& offset, double cell_distance) const
   {
     if(end - begin <= leaf_size) {
       for(std::size_t i = begin; i < end; ++i) {
@@ -144,14 +166,22 @@ private:
       best = d;
       best_k = k;
     }
+    const double old = offset[axis];
+    const double far_distance = cell_distance - old * old + diff * diff;
     if(diff < 0) {
-      search(begin, mid, depth + 1, q, best, best_k);
-      if(diff * diff <= best)
-        search(mid + 1, end, depth + 1, q, best, best_k);
+      search(begin, mid, depth + 1, q, best, best_k, offset, cell_distance);
+      if(far_distance <= best) {
+        offset[axis] = diff;
+        search(mid + 1, end, depth + 1, q, best, best_k, offset, far_distance);
+        offset[axis] = old;
+      }
     } else {
-      search(mid + 1, end, depth + 1, q, best, best_k);
-      if(diff * diff <= best)
-        search(begin, mid, depth + 1, q, best, best_k);
+      search(mid + 1, end, depth + 1, q, best, best_k, offset, cell_distance);
+      if(far_distance <= best) {
+        offset[axis] = diff;
+        search(begin, mid, depth + 1, q, best, best_k, offset, far_distance);
+        offset[axis] = old;
+      }
     }
   }
 

@@ -1,0 +1,194 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_SYMMETRIZATION_DETECT_REFLECTIVE_SYMMETRIES_H
+#define CGAL_SURFACE_MESH_SYMMETRIZATION_DETECT_REFLECTIVE_SYMMETRIES_H
+
+/// \file detect_reflective_symmetries.h
+
+#include <CGAL/Surface_mesh_symmetrization/Symmetry.h>
+#include <CGAL/Surface_mesh_symmetrization/internal/Plane_detection.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_symmetrization {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// A mesh read through the vertex point map and traits of `np`.
+template <typename TriangleMesh, typename NamedParameters>
+Mesh_arrays<TriangleMesh> read_mesh_np(const TriangleMesh& tm, const NamedParameters& np,
+                                       const std::string& who)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, tm));
+  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
+  const SAI::Point_to_vector<Geom_traits> to_vector{
+    choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits))};
+  return read_mesh(tm, vpm, to_vector, who);
+}
+
+template <typename Kernel>
+Symmetry<Kernel> symmetry_of(const Detected_plane& d)
+{
+  Symmetry<Kernel> s = reflective_symmetry<Kernel>(
+    typename Kernel::Plane_3(typename Kernel::FT(d.plane.normal.x), typename Kernel::FT(d.plane.normal.y),
+                             typename Kernel::FT(d.plane.normal.z), typename Kernel::FT(-d.plane.offset)));
+  s.score = d.score;
+  s.support_fraction = d.support_fraction;
+  s.support = d.support;
+  return s;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgSurfaceMeshSymmetrizationRef
+
+Detects the planar reflective symmetries of a triangle mesh, global and partial, in any pose
+(\cgalCite{Golovinskiy2010}, section 2.3; candidate planes voted in the manner of
+\cgalCite{Mitra2006} and \cgalCite{Podolak2006}).
+
+1. `number_of_samples` points are drawn uniformly on the surface, with the normals of their faces.
+2. Candidate planes: the three principal planes of the samples through their centroid, and the
+   peaks of the votes of sample pairs: a pair whose normals are mirror images of each other
+   (within 20 degrees) across its bisector plane votes for that plane. Votes are counted in bins
+   of normal direction (about 4 degrees) and offset (2% of the bounding-box diagonal); the
+   strongest bins, away from each other, are sharpened by mean shift over the votes around them.
+3. Each candidate is refined to minimize the symmetry distance: every sample is reflected and
+   paired with the closest surface point whose normal agrees with the reflected normal (CGAL's
+   AABB tree); Gauss-Newton steps on the plane's normal and offset minimize the robustly
+   weighted (Tukey) distances of the reflected samples to the tangent planes of their partners,
+   with a reach that shrinks from 15% to 2% of the diagonal. All candidates are first refined on
+   300 samples; the best distinct ones continue on every sample.
+4. The refined planes are scored (see `Symmetry::score`), planes closer than 2 degrees and 1% of
+   the diagonal are merged, and the support of each plane is computed (see
+   `Symmetry::support`). Planes whose support fraction is below `minimum_support` are dropped.
+
+Results are ranked by increasing score, best first: the global symmetries (support close to 1)
+come first, partial ones after. A mesh of perfect symmetry gives its plane to within a small
+fraction of a degree. The result depends only on the shape and `random_seed`, not on the pose of
+the mesh, and is the same for any number of threads.
+
+The surface should be consistently oriented (normals of a component all pointing outside, or all
+inside); it may be open or made of several components.
+
+\tparam TriangleMesh a model of `FaceListGraph` (for example `CGAL::Surface_mesh` or
+        `CGAL::Polyhedron_3`)
+\tparam OutputIterator an output iterator accepting `Symmetry<K>`, `K` the kernel of the mesh's
+        points (see `geom_traits`)
+\tparam NamedParameters a sequence of named parameters
+
+\param tm the mesh: non-empty, triangles only, finite coordinates, positive area
+\param out receives the symmetries found, best first
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{number_of_samples}
+    \cgalParamDescription{the number of points sampled on the surface (votes come from every pair
+      of them; the refinement and the score use them too)}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`1000`}
+    \cgalParamExtra{must be at least 20}
+  \cgalParamNEnd
+  \cgalParamNBegin{maximum_number_of_symmetries}
+    \cgalParamDescription{the largest number of symmetries reported}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`5`}
+  \cgalParamNEnd
+  \cgalParamNBegin{minimum_support}
+    \cgalParamDescription{the smallest support fraction of a reported symmetry}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0.1`}
+    \cgalParamExtra{must be in \f$[0, 1]\f$}
+  \cgalParamNEnd
+  \cgalParamNBegin{support_tolerance}
+    \cgalParamDescription{the tolerance \f$\sigma\f$ of the support weights, as a fraction of the
+      bounding-box diagonal}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0.01`}
+    \cgalParamExtra{must be positive}
+  \cgalParamNEnd
+  \cgalParamNBegin{random_seed}
+    \cgalParamDescription{the seed of the random sample points}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{`0`}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the largest number of threads used (with TBB); 0 for all cores. The
+      result does not depend on it}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`0`}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+      as key type and a point type of a \cgal kernel as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class, whose kernel is that of the
+      symmetries reported}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the output iterator past the last symmetry written
+
+\throws CGAL::Shape_analysis::Bad_input if the mesh has no faces, a face that is not a triangle, a
+        coordinate that is not finite or no area, or if a parameter is out of its range
+
+\sa `symmetrize()`
+*/
+template <typename TriangleMesh, typename OutputIterator,
+          typename NamedParameters = parameters::Default_named_parameters>
+OutputIterator detect_reflective_symmetries(const TriangleMesh& tm, OutputIterator out,
+                                            const NamedParameters& np = parameters::default_values())
+{
+  namespace SAI = CGAL::Shape_analysis::internal;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Kernel;
+  const std::string who = "detect_reflective_symmetries";
+
+  internal::Detection_options o;
+  o.number_of_samples =
+    SAI::parameter_value<std::size_t>(np, CGAL::internal_np::number_of_samples, std::size_t(1000));
+  o.maximum_number_of_symmetries =
+    SAI::parameter_value<std::size_t>(np, snp::maximum_number_of_symmetries_tag, std::size_t(5));
+  o.minimum_support = SAI::parameter_value<double>(np, snp::minimum_support_tag, 0.1);
+  o.support_tolerance = SAI::parameter_value<double>(np, snp::support_tolerance_tag, 0.01);
+  o.seed = SAI::parameter_value<std::uint64_t>(np, CGAL::internal_np::random_seed, std::uint64_t(0));
+  o.number_of_threads = SAI::parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
+  if(o.number_of_samples < 20)
+    throw Bad_input(who + ": number_of_samples must be at least 20");
+  if(o.number_of_samples > 1000000)
+    throw Bad_input(who + ": number_of_samples must be at most 1000000 (every pair votes)");
+  if(!(o.minimum_support >= 0 && o.minimum_support <= 1))
+    throw Bad_input(who + ": minimum_support must be in [0, 1]");
+  if(!(o.support_tolerance > 0) || !std::isfinite(o.support_tolerance))
+    throw Bad_input(who + ": support_tolerance must be a positive number");
+
+  const internal::Mesh_arrays<TriangleMesh> mesh = internal::read_mesh_np(tm, np, who);
+  const double area = mesh.surface.total_area();
+  if(!(area > 0) || !std::isfinite(area))
+    throw Bad_input(who + ": the mesh has no area");
+  for(const internal::Detected_plane& d : internal::detect_planes(mesh.surface, o))
+    *out++ = internal::symmetry_of<Kernel>(d);
+  return out;
+}
+
+} // namespace Surface_mesh_symmetrization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_SYMMETRIZATION_DETECT_REFLECTIVE_SYMMETRIES_H

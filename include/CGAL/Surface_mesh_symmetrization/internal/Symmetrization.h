@@ -1,0 +1,643 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_SYMMETRIZATION_INTERNAL_SYMMETRIZATION_H
+#define CGAL_SURFACE_MESH_SYMMETRIZATION_INTERNAL_SYMMETRIZATION_H
+
+// Symmetrization of a triangle surface (arrays) under one or several affine symmetries
+// (Golovinskiy's thesis, section 2.4):
+//   - correspondences: every vertex y_i of the current surface gets a mirror point p_i for each
+//     symmetry T: the closest point of the surface, with a compatible normal, to T^-1(y_i)
+//     (kept as a face and barycentric coordinates: the symmetric map);
+//   - a sparse least-squares solve of
+//       E = alpha E_sym + (1 - alpha) (E_shape + beta E_disp),
+//       E_sym   = 1/n sum_k sum_i w_ik |x_i - q_ik|^2,  q_ik = (y_i + T_k(p_ik)) / 2
+//       E_shape = (D / h)^2 / |E| sum_edges |(x_i - x_j) - (r_i - r_j)|^2 (edge vectors kept)
+//       E_disp  = 1/n sum_i |x_i - x0_i|^2
+//     (w: support weights; D the bounding-box diagonal and h the mean edge length of the input,
+//     so that the terms weigh alike for a smooth deformation of the whole shape; x0 the input),
+//     with alpha moved from 0 to 1 (alpha / (1 - alpha) from 0.1 to 10^4) and the
+//     correspondences recomputed after each solve. The reference r of the edge vectors is the
+//     input; in the last, constrained steps it is the current surface, so that the shape term
+//     vanishes at convergence and every vertex reaches the midpoint of itself and its mirror
+//     image, i.e. its mirror point lies on the surface. In those steps, two vertices whose mirror
+//     points fall next to each other (mutually, within a third of an edge) are paired exactly, so
+//     that a mesh whose connectivity is (nearly) symmetric becomes exactly symmetric;
+//   - the coordinates share one matrix (the targets are fixed within a solve): one sparse
+//     Cholesky factorization per step (Eigen's SimplicialLDLT), three solves;
+//   - multiresolution: coarser levels made with CGAL's edge collapse (each with about 1/8 of the
+//     vertices of the previous one) take the steps of the schedule first (the large-scale
+//     asymmetry); each finer level is seeded by the displacements of the next coarser one,
+//     interpolated at the closest points of its surface, then takes the last steps and, on the
+//     input's resolution, the constrained ones.
+
+#include <CGAL/Surface_mesh_symmetrization/internal/Symmetry_geometry.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Edge_length_cost.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Midpoint_placement.h>
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_symmetrization {
+namespace internal {
+
+// A symmetry as the solver sees it.
+struct Solver_symmetry
+{
+  Affine_3d transform;
+  std::vector<double> vertex_weight; // per vertex of the finest level, in [0, 1]; empty: 1
+};
+
+struct Symmetrization_options
+{
+  std::size_t number_of_iterations = 5;   // steps of alpha on the coarsest level
+  double shape_weight = 1;                // factor of E_shape
+  double displacement_weight = 0.01;      // beta
+  std::size_t number_of_levels = 0;       // 0: automatic
+  std::size_t coarsest_level_size = 20000; // vertices
+  double symmetry_tolerance = 1e-6;       // relative to the diagonal: projection steps stop
+  std::size_t projection_iterations = 8;  // most steps at alpha = 1 per level
+  double stall_ratio = 0.95;              // projection steps stop when a step's error is above this times the previous one
+  double constrained_ratio = 100;         // alpha / (1 - alpha) in the constrained steps (final_symmetry_weight)
+  double schedule_exponent = 4;           // the schedule ends at alpha / (1 - alpha) = 10^this
+  std::size_t direct_solver_limit = 2000000; // vertices
+  std::size_t number_of_threads = 0;
+  std::function<void(double)> progress;
+};
+
+// The mirror point of a vertex for one symmetry.
+struct Mirror
+{
+  std::uint32_t face = 0;
+  std::array<double, 3> barycentric{{1, 0, 0}};
+  double distance = 0; // from T^-1(x_i) to the mirror point
+  bool found = false;
+};
+
+struct Iteration_record
+{
+  std::size_t level = 0; // 0: the finest
+  double alpha = 0;
+  double symmetry_error = 0; // RMS mirror distance after the step, relative to the diagonal
+};
+
+struct Symmetrization_output
+{
+  std::vector<Vector_3d> points;                  // the symmetrized positions
+  std::vector<std::vector<Mirror>> mirrors;       // [symmetry][vertex], on the result
+  std::vector<Iteration_record> iterations;
+  double error_before = 0;                        // RMS, relative to the diagonal
+  double error_after = 0;
+  double distortion = 0;                          // RMS relative change of edge lengths
+  std::vector<std::size_t> level_sizes;           // vertices per level, finest first
+};
+
+// ---------------------------------------------------------------------------------------------
+
+// The weighted RMS of the mirror distances of `mirrors` (weights: per symmetry and vertex, empty
+// for 1), over the vertices that have a mirror point (a vertex without faces has none).
+inline double rms_mirror_distance(const std::vector<std::vector<Mirror>>& mirrors,
+                                  const std::vector<std::vector<double>>& weights)
+{
+  double sum = 0, w_sum = 0;
+  for(std::size_t k = 0; k < mirrors.size(); ++k)
+    for(std::size_t i = 0; i < mirrors[k].size(); ++i) {
+      const double w = weights[k].empty() ? 1.0 : weights[k][i];
+      if(!mirrors[k][i].found || !(w > 0))
+        continue;
+      sum += w * mirrors[k][i].distance * mirrors[k][i].distance;
+      w_sum += w;
+    }
+  return w_sum > 0 ? std::sqrt(sum / w_sum) : 0.0;
+}
+
+// Mirror points of every vertex of `s` for every symmetry; `exact`: closest points through the
+// AABB tree (otherwise the faster local search, exact on smooth regions).
+inline std::vector<std::vector<Mirror>>
+mirror_points(const Surface& s, const Surface_index& index, const std::vector<Affine_3d>& inverses,
+              bool exact, std::size_t threads)
+{
+  const std::size_t n = s.number_of_vertices();
+  const std::vector<Vector_3d> normals = s.vertex_normals();
+  std::vector<std::vector<Mirror>> result(inverses.size(), std::vector<Mirror>(n));
+  SAI::Parallel_workspaces<std::vector<std::pair<double, std::uint32_t>>> parallel(threads);
+  const std::size_t block = 512;
+  for(std::size_t k = 0; k < inverses.size(); ++k) {
+    const Affine_3d& inv = inverses[k];
+    const Matrix_3d nm = inv.normal_matrix();
+    parallel.for_each(0, (n + block - 1) / block, [&](std::size_t b, std::vector<std::pair<double, std::uint32_t>>& buffer) {
+      for(std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i) {
+        if(!(normals[i].squared_length() > 0))
+          continue; // no face: no mirror point
+        const Vector_3d q = inv(s.points[i]);
+        const Vector_3d m = inv.transform_normal(normals[i], nm);
+        const Surface_point c = exact ? index.closest_compatible(q, m, 0.0)
+                                      : index.approximate_closest_compatible(q, m, 0.0,
+                                                                             std::numeric_limits<double>::infinity(), buffer);
+        Mirror& r = result[k][i];
+        if(!c.found)
+          continue;
+        r.found = true;
+        r.face = c.face;
+        r.barycentric = c.barycentric;
+        r.distance = std::sqrt(c.squared_distance);
+      }
+    });
+  }
+  return result;
+}
+
+// RMS relative change of the edge lengths between `x0` and `x` (edges of positive length).
+inline double edge_distortion(const Surface& s, const std::vector<Vector_3d>& x0,
+                              const std::vector<Vector_3d>& x)
+{
+  double sum = 0;
+  std::size_t count = 0;
+  for(const auto& e : s.edges()) {
+    const double l0 = (x0[e.first] - x0[e.second]).length();
+    if(!(l0 > 0))
+      continue;
+    const double l = (x[e.first] - x[e.second]).length();
+    sum += (l / l0 - 1) * (l / l0 - 1);
+    ++count;
+  }
+  return count > 0 ? std::sqrt(sum / double(count)) : 0.0;
+}
+
+// The naive baseline of the benchmarks: every vertex moved halfway to the image, under `t`, of
+// its mirror point (the closest compatible surface point to t^-1(x_i)); vertices without one stay.
+inline std::vector<Vector_3d> naive_symmetrization(const Surface& s, const Affine_3d& t,
+                                                   std::size_t threads)
+{
+  const Surface_index index(s);
+  const auto mirrors = mirror_points(s, index, {t.inverse()}, true, threads);
+  std::vector<Vector_3d> x = s.points;
+  for(std::size_t i = 0; i < x.size(); ++i) {
+    const Mirror& m = mirrors[0][i];
+    if(!m.found)
+      continue;
+    const auto c = s.corners(m.face);
+    const Vector_3d p = c[0] * m.barycentric[0] + c[1] * m.barycentric[1] + c[2] * m.barycentric[2];
+    x[i] = (s.points[i] + t(p)) * 0.5;
+  }
+  return x;
+}
+
+// The RMS symmetry error of positions `x` (connectivity of `s`) under `t`, relative to the
+// diagonal of `s`, with exact closest points.
+inline double symmetry_error(const Surface& s, const std::vector<Vector_3d>& x, const Affine_3d& t,
+                             std::size_t threads)
+{
+  const Surface moved{x, s.triangles};
+  const Surface_index index(moved);
+  const auto mirrors = mirror_points(moved, index, {t.inverse()}, true, threads);
+  return rms_mirror_distance(mirrors, {std::vector<double>()}) / s.diagonal();
+}
+
+// RMS relative change of the edge vectors between `x0` and `x`: |(x_i - x_j) - (x0_i - x0_j)|
+// over |x0_i - x0_j| (edges of positive length). It counts stretching and bending alike.
+inline double edge_vector_distortion(const Surface& s, const std::vector<Vector_3d>& x0,
+                                     const std::vector<Vector_3d>& x)
+{
+  double sum = 0;
+  std::size_t count = 0;
+  for(const auto& e : s.edges()) {
+    const Vector_3d d0 = x0[e.first] - x0[e.second];
+    const double l0 = d0.length();
+    if(!(l0 > 0))
+      continue;
+    const double d = ((x[e.first] - x[e.second]) - d0).length() / l0;
+    sum += d * d;
+    ++count;
+  }
+  return count > 0 ? std::sqrt(sum / double(count)) : 0.0;
+}
+
+// ---------------------------------------------------------------------------------------------
+// One level of the multiresolution hierarchy.
+
+struct Level
+{
+  Surface original;                       // positions x0 at this level
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  double mean_edge = 0;
+  // Per vertex of the next finer level: its closest point on this level's original surface.
+  std::vector<Surface_point> finer_on_this;
+  std::vector<std::vector<double>> weights; // [symmetry][vertex] (empty: 1)
+};
+
+// Decimates `s` with CGAL's edge collapse (edge-length cost, midpoint placement) to about
+// `target` vertices. Returns false when the surface cannot be built as a halfedge mesh or does
+// not get smaller.
+inline bool decimate(const Surface& s, std::size_t target, Surface& result)
+{
+  typedef CGAL::Simple_cartesian<double> K;
+  typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+  namespace SMS = CGAL::Surface_mesh_simplification;
+  Mesh mesh;
+  std::vector<std::uint32_t> used(s.points.size(), 0);
+  for(const auto& t : s.triangles)
+    for(std::uint32_t v : t)
+      used[v] = 1;
+  std::vector<Mesh::Vertex_index> vertex(s.points.size());
+  for(std::size_t i = 0; i < s.points.size(); ++i)
+    if(used[i])
+      vertex[i] = mesh.add_vertex(K::Point_3(s.points[i].x, s.points[i].y, s.points[i].z));
+  std::vector<Mesh::Vertex_index> corners(3);
+  for(const auto& t : s.triangles) {
+    for(int c = 0; c < 3; ++c)
+      corners[std::size_t(c)] = vertex[t[std::size_t(c)]];
+    if(CGAL::Euler::add_face(corners, mesh) == Mesh::null_face())
+      return false; // a face that a halfedge mesh cannot hold: no coarser level
+  }
+  const std::size_t before = num_vertices(mesh);
+  if(before <= target)
+    return false;
+  SMS::Count_stop_predicate<Mesh> stop(3 * target);
+  SMS::edge_collapse(mesh, stop,
+                     CGAL::parameters::get_cost(SMS::Edge_length_cost<Mesh>())
+                       .get_placement(SMS::Midpoint_placement<Mesh>()));
+  mesh.collect_garbage();
+  if(num_vertices(mesh) >= before || num_faces(mesh) == 0)
+    return false;
+  result = Surface();
+  result.points.reserve(num_vertices(mesh));
+  for(Mesh::Vertex_index v : mesh.vertices()) {
+    const K::Point_3& p = mesh.point(v);
+    result.points.emplace_back(p.x(), p.y(), p.z());
+  }
+  for(Mesh::Face_index f : mesh.faces()) {
+    std::array<std::uint32_t, 3> t{{0, 0, 0}};
+    int c = 0;
+    for(Mesh::Vertex_index v : vertices_around_face(mesh.halfedge(f), mesh))
+      t[std::size_t(c++)] = std::uint32_t(v.idx());
+    result.triangles.push_back(t);
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The solver.
+
+class Symmetrizer
+{
+public:
+  typedef Eigen::SparseMatrix<double> Sparse;
+  typedef Eigen::Triplet<double> Triplet;
+
+  Symmetrizer(const Surface& input, const std::vector<Solver_symmetry>& symmetries,
+              const Symmetrization_options& o)
+    : m_input(input), m_o(o)
+  {
+    for(const Solver_symmetry& s : symmetries) {
+      m_transforms.push_back(s.transform);
+      m_inverses.push_back(s.transform.inverse());
+    }
+    m_diagonal = input.diagonal();
+    // Levels, finest first.
+    Level finest;
+    finest.original = input;
+    for(const Solver_symmetry& s : symmetries)
+      finest.weights.push_back(s.vertex_weight);
+    m_levels.push_back(std::move(finest));
+    const std::size_t max_levels = o.number_of_levels == 0 ? 8 : o.number_of_levels;
+    while(m_levels.size() < max_levels) {
+      const Surface& fine = m_levels.back().original;
+      std::size_t used = 0;
+      {
+        std::vector<char> u(fine.points.size(), 0);
+        for(const auto& t : fine.triangles)
+          for(std::uint32_t v : t)
+            u[v] = 1;
+        for(char c : u)
+          used += c ? 1 : 0;
+      }
+      const std::size_t target = used / 8;
+      if(o.number_of_levels == 0 && target < o.coarsest_level_size / 2)
+        break;
+      if(target < 20)
+        break;
+      Level coarse;
+      if(!decimate(fine, target, coarse.original))
+        break;
+      m_levels.push_back(std::move(coarse));
+    }
+    // Links between levels and the weights of coarser levels (the weight of the closest point).
+    for(std::size_t l = 1; l < m_levels.size(); ++l) {
+      const Surface& fine = m_levels[l - 1].original;
+      Level& coarse = m_levels[l];
+      const Surface_index coarse_index(coarse.original);
+      coarse.finer_on_this.resize(fine.number_of_vertices());
+      SAI::Parallel_workspaces<char> parallel(o.number_of_threads);
+      parallel.for_each(0, fine.number_of_vertices(), [&](std::size_t i, char&) {
+        coarse.finer_on_this[i] = coarse_index.closest(fine.points[i]);
+      });
+      const Surface_index fine_index(fine);
+      coarse.weights.resize(symmetries.size());
+      for(std::size_t k = 0; k < symmetries.size(); ++k) {
+        const std::vector<double>& wf = m_levels[l - 1].weights[k];
+        if(wf.empty())
+          continue;
+        std::vector<double>& wc = coarse.weights[k];
+        wc.assign(coarse.original.number_of_vertices(), 0.0);
+        for(std::size_t i = 0; i < wc.size(); ++i) {
+          const Surface_point c = fine_index.closest(coarse.original.points[i]);
+          if(!c.found)
+            continue;
+          const auto& t = fine.triangles[c.face];
+          wc[i] = c.barycentric[0] * wf[t[0]] + c.barycentric[1] * wf[t[1]] + c.barycentric[2] * wf[t[2]];
+        }
+      }
+    }
+    for(Level& level : m_levels) {
+      level.edges = level.original.edges();
+      double sum = 0;
+      for(const auto& e : level.edges)
+        sum += (level.original.points[e.first] - level.original.points[e.second]).length();
+      level.mean_edge = level.edges.empty() ? 0.0 : sum / double(level.edges.size());
+    }
+  }
+
+  Symmetrization_output run()
+  {
+    Symmetrization_output out;
+    for(const Level& l : m_levels)
+      out.level_sizes.push_back(l.original.number_of_vertices());
+    {
+      const Surface_index index(m_input);
+      const auto mirrors = mirror_points(m_input, index, m_inverses, true, m_o.number_of_threads);
+      out.error_before = rms_mirror_distance(mirrors, m_levels.front().weights) / m_diagonal;
+    }
+    // Work counted for progress: vertices times steps.
+    double total_work = 0, done_work = 0;
+    const std::size_t L = m_levels.size();
+    for(std::size_t l = 0; l < L; ++l)
+      total_work += double(m_levels[l].original.number_of_vertices()) *
+                    double(schedule(l).size() + m_o.projection_iterations / 2);
+    std::vector<Vector_3d> x; // positions of the current level
+    for(std::size_t step = 0; step < L; ++step) {
+      const std::size_t l = L - 1 - step;
+      Level& level = m_levels[l];
+      if(step == 0) {
+        x = level.original.points;
+      } else {
+        // Seed from the coarser level's displacements.
+        const Level& coarse = m_levels[l + 1];
+        std::vector<Vector_3d> seeded = level.original.points;
+        for(std::size_t i = 0; i < seeded.size(); ++i) {
+          const Surface_point& c = coarse.finer_on_this[i];
+          if(!c.found)
+            continue;
+          const auto& t = coarse.original.triangles[c.face];
+          Vector_3d d;
+          for(int j = 0; j < 3; ++j)
+            d += (x[t[std::size_t(j)]] - coarse.original.points[t[std::size_t(j)]]) * c.barycentric[std::size_t(j)];
+          seeded[i] += d;
+        }
+        x.swap(seeded);
+      }
+      const std::vector<double> alphas = schedule(l);
+      // The steps of the schedule, then constrained steps until the error is below the
+      // tolerance, stops decreasing by 5%, or `projection_iterations` were made; the positions of
+      // the smallest error from the last step of the schedule on are kept.
+      std::size_t projections = 0;
+      std::vector<Vector_3d> best_x;
+      double best_error = std::numeric_limits<double>::infinity();
+      double previous_constrained = std::numeric_limits<double>::infinity();
+      for(std::size_t s = 0;; ++s) {
+        const bool constrained = s + 1 >= alphas.size();
+        // Coarser levels only take the steps of the schedule: their constrained steps would fit
+        // their own (coarse) triangles to each other, and seed the finer level with that.
+        if(constrained && l > 0) {
+          if(s > 0) {
+            const Surface current{x, level.original.triangles};
+            const Surface_index index(current);
+            const auto mirrors = mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
+            out.iterations.back().symmetry_error = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
+          }
+          break;
+        }
+        const double alpha = constrained ? 1.0 : alphas[s];
+        const Surface current{x, level.original.triangles};
+        std::vector<std::vector<Mirror>> mirrors;
+        {
+          const Surface_index index(current);
+          mirrors = mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
+        }
+        if(s > 0) {
+          const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
+          out.iterations.back().symmetry_error = e;
+          if(e < best_error && s + 2 >= alphas.size()) { // from the last step of the schedule
+            best_error = e;
+            best_x = x;
+          }
+          if(projections > 0) {
+            // The first constrained step may pair vertices and raise the error for a step; after
+            // it, stop once a step gains less than 5%.
+            const bool stalled = projections >= 2 && e > m_o.stall_ratio * previous_constrained;
+            previous_constrained = e;
+            if(e <= m_o.symmetry_tolerance || projections >= m_o.projection_iterations || stalled)
+              break;
+          }
+        }
+        solve(level, mirrors, alpha, constrained, x);
+        if(constrained)
+          ++projections;
+        out.iterations.push_back(Iteration_record{l, alpha, 0.0});
+        done_work += double(level.original.number_of_vertices());
+        if(m_o.progress)
+          m_o.progress((std::min)(0.99, done_work / (std::max)(1.0, total_work)));
+      }
+      if(!best_x.empty())
+        x.swap(best_x);
+    }
+    out.points = x;
+    {
+      const Surface result{x, m_input.triangles};
+      const Surface_index index(result);
+      out.mirrors = mirror_points(result, index, m_inverses, true, m_o.number_of_threads);
+      out.error_after = rms_mirror_distance(out.mirrors, m_levels.front().weights) / m_diagonal;
+      if(!out.iterations.empty())
+        out.iterations.back().symmetry_error = out.error_after;
+    }
+    out.distortion = edge_distortion(m_input, m_input.points, x);
+    return out;
+  }
+
+private:
+  // The alphas of the steps before the constrained ones: from 0 to 1 on the coarsest level; the
+  // last two on finer levels (seeded). The last entry (1) marks the constrained steps.
+  std::vector<double> schedule(std::size_t level) const
+  {
+    // alpha / (1 - alpha) grows geometrically from 10^r0 to 10^r1.
+    const double r0 = -1.0, r1 = m_o.schedule_exponent;
+    std::vector<double> a;
+    const auto alpha_of = [](double r) { const double q = std::pow(10.0, r); return q / (1 + q); };
+    if(level + 1 == m_levels.size()) {
+      const std::size_t k = (std::max)(std::size_t(1), m_o.number_of_iterations);
+      for(std::size_t i = 0; i + 1 < k; ++i)
+        a.push_back(alpha_of(k > 2 ? r0 + (r1 - r0) * double(i) / double(k - 2) : r1));
+    } else {
+      a.push_back(alpha_of(r1 - 1));
+      a.push_back(alpha_of(r1));
+    }
+    a.push_back(1.0);
+    return a;
+  }
+
+  // One solve with fixed targets: every vertex is drawn toward the midpoint q_i = (y_i + T(p_i)) / 2
+  // of its current position y_i and the image of its mirror point p_i (for every symmetry, with
+  // its weight), E_sym = 1/n sum w |x_i - q_i|^2. The coordinates decouple and share one matrix.
+  // `anchor_current`: the edge vectors are kept relative to the current positions (the constrained
+  // steps: at a fixed point the shape term vanishes and x_i = q_i, i.e. the mirror points lie on
+  // the surface); otherwise relative to the input.
+  void solve(const Level& level, const std::vector<std::vector<Mirror>>& mirrors, double alpha,
+             bool anchor_current, std::vector<Vector_3d>& x) const
+  {
+    const std::size_t n = level.original.number_of_vertices();
+    const double D = m_diagonal;
+    const double h = m_levels.front().mean_edge > 0 ? m_levels.front().mean_edge : D;
+    const double rho = alpha >= 1 ? m_o.constrained_ratio : alpha / (1 - alpha);
+    const double a_sym = rho / double(n);
+    const double a_edge = m_o.shape_weight * (D * D) / (h * h) /
+                          double((std::max)(std::size_t(1), level.edges.size()));
+    const double a_disp = m_o.displacement_weight / double(n);
+    const std::vector<Vector_3d>& x0 = level.original.points;
+    const std::vector<Vector_3d> y = x;
+    std::vector<double> w(n, 0.0);
+    std::vector<Vector_3d> wq(n); // sum of weight * target
+    const bool snap = anchor_current;
+    for(std::size_t k = 0; k < mirrors.size(); ++k) {
+      // Mutual vertex pairs: the corner of the mirror face nearest to the mirror point of i is j,
+      // and that of j is i, both within a third of the mean edge length.
+      std::vector<std::uint32_t> nearest(n, Surface_index::no_face);
+      for(std::size_t i = 0; i < n; ++i) {
+        const Mirror& m = mirrors[k][i];
+        if(!m.found)
+          continue;
+        const auto& f = level.original.triangles[m.face];
+        const Vector_3d p = y[f[0]] * m.barycentric[0] + y[f[1]] * m.barycentric[1] + y[f[2]] * m.barycentric[2];
+        std::size_t best = 0;
+        double best_d = std::numeric_limits<double>::infinity();
+        for(std::size_t c = 0; c < 3; ++c) {
+          const double d = (y[f[c]] - p).squared_length();
+          if(d < best_d) {
+            best_d = d;
+            best = c;
+          }
+        }
+        if(best_d < h * h / 9)
+          nearest[i] = f[best];
+      }
+      for(std::size_t i = 0; i < n; ++i) {
+        const Mirror& m = mirrors[k][i];
+        const double wi = a_sym * weight(level, k, i);
+        if(!m.found || !(wi > 0))
+          continue;
+        const auto& f = level.original.triangles[m.face];
+        Vector_3d p = y[f[0]] * m.barycentric[0] + y[f[1]] * m.barycentric[1] + y[f[2]] * m.barycentric[2];
+        const std::uint32_t j = nearest[i];
+        if(snap && j != Surface_index::no_face && nearest[j] == i)
+          p = y[j];
+        const Vector_3d q = (y[i] + m_transforms[k](p)) * 0.5;
+        w[i] += wi;
+        wq[i] += q * wi;
+      }
+    }
+    std::vector<Triplet> tr;
+    tr.reserve(4 * level.edges.size() + n);
+    std::vector<Vector_3d> b(n);
+    for(const auto& e : level.edges) {
+      tr.emplace_back(Eigen::Index(e.first), Eigen::Index(e.first), a_edge);
+      tr.emplace_back(Eigen::Index(e.second), Eigen::Index(e.second), a_edge);
+      tr.emplace_back(Eigen::Index(e.first), Eigen::Index(e.second), -a_edge);
+      tr.emplace_back(Eigen::Index(e.second), Eigen::Index(e.first), -a_edge);
+      const std::vector<Vector_3d>& ref = anchor_current ? y : x0;
+      const Vector_3d d = ref[e.first] - ref[e.second];
+      b[e.first] += d * a_edge;
+      b[e.second] -= d * a_edge;
+    }
+    for(std::size_t i = 0; i < n; ++i) {
+      tr.emplace_back(Eigen::Index(i), Eigen::Index(i), w[i] + a_disp);
+      b[i] += wq[i] + x0[i] * a_disp;
+    }
+    // The matrix only depends on the level, alpha and the weights: its factorization is kept
+    // for the next solve with the same ones (the constrained steps).
+    Factorization& F = m_factorization;
+    if(!(F.level == &level && F.ratio == rho && F.weights == w)) {
+      Sparse A(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+      A.setFromTriplets(tr.begin(), tr.end());
+      F.level = &level;
+      F.ratio = rho;
+      F.weights = w;
+      F.direct = n <= m_o.direct_solver_limit;
+      if(F.direct) {
+        F.ldlt.compute(A);
+        F.direct = F.ldlt.info() == Eigen::Success;
+      }
+      if(!F.direct) {
+        F.cg.setTolerance(1e-10);
+        F.cg.setMaxIterations(1000);
+        F.cg.compute(A);
+      }
+    }
+    for(int c = 0; c < 3; ++c) {
+      Eigen::VectorXd rhs(static_cast<Eigen::Index>(n)), guess(static_cast<Eigen::Index>(n));
+      for(std::size_t i = 0; i < n; ++i) {
+        rhs(Eigen::Index(i)) = b[i][c];
+        guess(Eigen::Index(i)) = y[i][c];
+      }
+      const Eigen::VectorXd sol = F.direct ? Eigen::VectorXd(F.ldlt.solve(rhs))
+                                           : Eigen::VectorXd(F.cg.solveWithGuess(rhs, guess));
+      for(std::size_t i = 0; i < n; ++i)
+        if(std::isfinite(sol(Eigen::Index(i))))
+          x[i][c] = sol(Eigen::Index(i));
+    }
+  }
+
+  // The factorization of the last solve's matrix.
+  struct Factorization
+  {
+    const Level* level = nullptr;
+    double ratio = -1;
+    std::vector<double> weights;
+    bool direct = true;
+    Eigen::SimplicialLDLT<Sparse> ldlt;
+    Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> cg;
+  };
+  mutable Factorization m_factorization;
+
+  double weight(const Level& level, std::size_t k, std::size_t i) const
+  {
+    const std::vector<double>& w = level.weights[k];
+    return w.empty() ? 1.0 : w[i];
+  }
+
+  const Surface& m_input;
+  Symmetrization_options m_o;
+  std::vector<Affine_3d> m_transforms, m_inverses;
+  double m_diagonal = 1;
+  std::vector<Level> m_levels;
+};
+
+} // namespace internal
+} // namespace Surface_mesh_symmetrization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_SYMMETRIZATION_INTERNAL_SYMMETRIZATION_H

@@ -1,0 +1,663 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+// shape_analysis symmetry detect IN --report R.json [--output SUPPORT.ply]
+// shape_analysis symmetry symmetrize IN [--plane a,b,c,d] --output OUT.off --map MAP.txt --report R.json
+// shape_analysis symmetry enhance IN --amount t [--plane a,b,c,d | --symmetric SYM.off] --output OUT.off
+// shape_analysis symmetry transfer IN [--colors IN_COLORS.ply] [--plane a,b,c,d] --output OUT.ply
+
+#include "cli_common.h"
+
+#include <CGAL/Surface_mesh_symmetrization/detect_reflective_symmetries.h>
+#include <CGAL/Surface_mesh_symmetrization/symmetrize.h>
+#include <CGAL/Surface_mesh_symmetrization/transfer_vertex_attribute.h>
+
+#include <CGAL/IO/PLY.h>
+#include <CGAL/IO/polygon_soup_io.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace shape_analysis_cli {
+
+namespace {
+
+namespace SMS = CGAL::Surface_mesh_symmetrization;
+typedef SMS::Symmetry<Kernel> Symmetry;
+
+struct Common_options
+{
+  std::string input, report, plane;
+  std::size_t samples = 1000;
+  unsigned int seed = 0;
+  std::size_t threads = 0;
+  bool quiet = false;
+  bool verbose = false;
+};
+
+struct Detect_options : Common_options
+{
+  std::string output_ply;
+  std::size_t max_symmetries = 5;
+  double min_support = 0.1;
+};
+
+struct Symmetrize_options : Common_options
+{
+  std::string output_off, map;
+  std::size_t iterations = 5;
+  std::size_t levels = 0;
+  double final_weight = 100;
+};
+
+struct Enhance_options : Symmetrize_options
+{
+  double amount = 1;
+  std::string symmetric;
+};
+
+struct Transfer_options : Common_options
+{
+  std::string colors, output_ply, mode = "copy", from = "positive";
+};
+
+void add_common_options(CLI::App* cmd, Common_options& o, bool with_plane)
+{
+  cmd->add_option("input", o.input, "Triangle mesh (.off, .ply, .obj, .stl)")->required();
+  if(with_plane)
+    cmd->add_option("--plane", o.plane,
+                    "Symmetry plane a,b,c,d (a x + b y + c z + d = 0); detected when absent");
+  cmd->add_option("--samples", o.samples, "Number of points sampled for the detection (>= 20)")
+    ->capture_default_str();
+  cmd->add_option("--seed", o.seed, "Random seed of the detection (same seed, same result)")
+    ->capture_default_str();
+  cmd->add_option("--threads", o.threads, "Largest number of threads (0: all cores)")->capture_default_str();
+  cmd->add_flag("-q,--quiet", o.quiet, "No progress on stderr");
+  cmd->add_flag("-v,--verbose", o.verbose, "Progress on stderr even when it is not a terminal");
+}
+
+// "a,b,c,d" as a plane; Usage_error when it is not four numbers.
+Kernel::Plane_3 parse_plane(const std::string& text)
+{
+  std::vector<double> v;
+  std::stringstream ss(text);
+  std::string item;
+  while(std::getline(ss, item, ',')) {
+    std::size_t used = 0;
+    double x = 0;
+    try {
+      x = std::stod(item, &used);
+    } catch(const std::exception&) {
+      used = 0;
+    }
+    while(used < item.size() && std::isspace(static_cast<unsigned char>(item[used])))
+      ++used;
+    if(item.empty() || used != item.size())
+      throw Usage_error("--plane needs four numbers a,b,c,d (got '" + text + "')");
+    v.push_back(x);
+  }
+  if(v.size() != 4)
+    throw Usage_error("--plane needs four numbers a,b,c,d (got '" + text + "')");
+  return Kernel::Plane_3(v[0], v[1], v[2], v[3]);
+}
+
+// The reflective symmetry to use: the given plane, or the best detected one.
+Symmetry symmetry_of(const Common_options& o, const Mesh& mesh, Progress& progress, double& seconds,
+                     bool& detected)
+{
+  Stopwatch watch;
+  detected = o.plane.empty();
+  if(!detected) {
+    const Symmetry s = SMS::reflective_symmetry<Kernel>(parse_plane(o.plane));
+    seconds = watch.seconds();
+    return s;
+  }
+  progress.stage("detecting the symmetry plane");
+  std::vector<Symmetry> found;
+  SMS::detect_reflective_symmetries(mesh, std::back_inserter(found),
+                                    SMS::parameters::number_of_samples(o.samples)
+                                      .random_seed(o.seed)
+                                      .number_of_threads(o.threads)
+                                      .maximum_number_of_symmetries(1));
+  seconds = watch.seconds();
+  if(found.empty())
+    throw Cli_error("no reflective symmetry found (give one with --plane a,b,c,d)");
+  return found.front();
+}
+
+// The plane as JSON: unit normal n and offset d of n.x = d, and coefficients a,b,c,d of
+// a x + b y + c z + d = 0 (for --plane).
+Json plane_json(const Symmetry& s)
+{
+  const double a = CGAL::to_double(s.plane.a()), b = CGAL::to_double(s.plane.b()),
+               c = CGAL::to_double(s.plane.c()), d = CGAL::to_double(s.plane.d());
+  const double l = std::sqrt(a * a + b * b + c * c);
+  Json p = Json::object();
+  p["normal"] = Json(std::vector<double>{a / l, b / l, c / l});
+  p["offset"] = -d / l;
+  p["coefficients"] = Json(std::vector<double>{a / l, b / l, c / l, d / l});
+  return p;
+}
+
+std::string plane_text(const Symmetry& s)
+{
+  const Json p = plane_json(s);
+  std::ostringstream out;
+  out << std::setprecision(9);
+  const double a = CGAL::to_double(s.plane.a()), b = CGAL::to_double(s.plane.b()),
+               c = CGAL::to_double(s.plane.c()), d = CGAL::to_double(s.plane.d());
+  const double l = std::sqrt(a * a + b * b + c * c);
+  out << a / l << ',' << b / l << ',' << c / l << ',' << d / l;
+  return out.str();
+}
+
+// The positions of the file's points after the mesh's vertices moved (points outside the mesh
+// keep theirs).
+std::vector<Point_3> moved_points(const Input_mesh& input, const Mesh& mesh)
+{
+  std::vector<Point_3> points = input.points;
+  for(Mesh::Vertex_index v : mesh.vertices())
+    if(input.vertex_point[v] != Input_mesh::left_out)
+      points[input.vertex_point[v]] = mesh.point(v);
+  return points;
+}
+
+// Binary PLY of a triangle soup with per-vertex colours (double coordinates).
+void write_vertex_coloured_ply(std::ostream& out, const std::vector<Point_3>& points,
+                               const std::vector<std::array<std::size_t, 3>>& triangles,
+                               const std::vector<CGAL::IO::Color>& colours)
+{
+  out << "ply\nformat binary_little_endian 1.0\n"
+      << "comment written by shape_analysis (CGAL Global Shape Analysis)\n"
+      << "element vertex " << points.size() << "\n"
+      << "property double x\nproperty double y\nproperty double z\n"
+      << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+      << "element face " << triangles.size() << "\n"
+      << "property list uchar int vertex_indices\n"
+      << "end_header\n";
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    for(int k = 0; k < 3; ++k) {
+      const double x = CGAL::to_double(points[i][k]);
+      out.write(reinterpret_cast<const char*>(&x), sizeof x);
+    }
+    const unsigned char c[3] = {colours[i].red(), colours[i].green(), colours[i].blue()};
+    out.write(reinterpret_cast<const char*>(c), 3);
+  }
+  for(const auto& t : triangles) {
+    const unsigned char three = 3;
+    out.write(reinterpret_cast<const char*>(&three), 1);
+    for(std::size_t v : t) {
+      const std::int32_t i = static_cast<std::int32_t>(v);
+      out.write(reinterpret_cast<const char*>(&i), sizeof i);
+    }
+  }
+}
+
+// Binary PLY with per-face support: a colour from grey (0) to red (1) and a float `support`.
+void write_support_ply(std::ostream& out, const std::vector<Point_3>& points,
+                       const std::vector<std::array<std::size_t, 3>>& triangles,
+                       const std::vector<double>& support)
+{
+  const auto clamped = [&](std::size_t f) { return (std::max)(0.0, (std::min)(1.0, support[f])); };
+  write_face_ply(
+    out, points, triangles,
+    [&](std::size_t f) {
+      const double s = clamped(f);
+      return std::array<unsigned char, 3>{{static_cast<unsigned char>(200 + 55 * s),
+                                           static_cast<unsigned char>(200 * (1 - s)),
+                                           static_cast<unsigned char>(200 * (1 - s))}};
+    },
+    "support", false, clamped);
+}
+
+// Per input face, from per mesh face (faces left out of the mesh take `fallback`).
+std::vector<double> per_input_face(const Input_mesh& input, const std::vector<double>& mesh_values,
+                                   double fallback)
+{
+  std::vector<double> r(input.number_of_input_faces(), fallback);
+  for(std::size_t i = 0; i < r.size(); ++i)
+    if(input.mesh_face[i] != Input_mesh::left_out)
+      r[i] = mesh_values[input.mesh_face[i]];
+  return r;
+}
+
+// The symmetric map per point of the output file: "point face b0 b1 b2", the face being an input
+// face and the coordinates in the order of its corners in the output; "point -1 0 0 0" for
+// points without a mirror point.
+void write_map(std::ostream& out, const Input_mesh& input, const Mesh& mesh,
+               const std::vector<SMS::Mirror_point>& map)
+{
+  std::vector<std::size_t> input_face(num_faces(mesh), Input_mesh::left_out);
+  for(std::size_t i = 0; i < input.mesh_face.size(); ++i)
+    if(input.mesh_face[i] != Input_mesh::left_out)
+      input_face[input.mesh_face[i]] = i;
+  std::vector<Mesh::Face_index> face_of;
+  for(Mesh::Face_index f : mesh.faces())
+    face_of.push_back(f);
+  std::vector<std::size_t> vertex_of_point(input.points.size(), Input_mesh::left_out);
+  std::size_t k = 0;
+  for(Mesh::Vertex_index v : mesh.vertices()) {
+    const std::size_t p = input.vertex_point[v];
+    if(p != Input_mesh::left_out && vertex_of_point[p] == Input_mesh::left_out)
+      vertex_of_point[p] = k;
+    ++k;
+  }
+  out << "# shape_analysis symmetry map: point face b0 b1 b2\n"
+      << "# point: 0-based vertex of the output mesh; face: 0-based face of the output mesh (-1: no\n"
+      << "# mirror point); b0 b1 b2: barycentric coordinates w.r.t. the face's corners in file order\n";
+  out << std::setprecision(17);
+  for(std::size_t p = 0; p < input.points.size(); ++p) {
+    const std::size_t v = vertex_of_point[p];
+    if(v == Input_mesh::left_out || !map[v].found || input_face[map[v].face] == Input_mesh::left_out) {
+      out << p << " -1 0 0 0\n";
+      continue;
+    }
+    const SMS::Mirror_point& m = map[v];
+    const std::size_t f = input_face[m.face];
+    // Corners of the mesh face in the order of the barycentric coordinates, as points.
+    std::array<std::size_t, 3> corner{{0, 0, 0}};
+    int c = 0;
+    for(Mesh::Vertex_index u : vertices_around_face(mesh.halfedge(face_of[m.face]), mesh))
+      corner[std::size_t(c++)] = input.vertex_point[u];
+    std::array<double, 3> b{{0, 0, 0}};
+    for(int j = 0; j < 3; ++j)
+      for(int q = 0; q < 3; ++q)
+        if(input.triangles[f][std::size_t(q)] == corner[std::size_t(j)])
+          b[std::size_t(q)] += m.barycentric[std::size_t(j)];
+    out << p << ' ' << f << ' ' << b[0] << ' ' << b[1] << ' ' << b[2] << '\n';
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+
+int run_detect(const Detect_options& o)
+{
+  Stopwatch total;
+  Progress progress("symmetry detect", o.quiet, o.verbose);
+  Output_files outputs;
+  outputs.add_input(o.input);
+  if(!o.output_ply.empty()) {
+    require_extension(o.output_ply, ".ply", "support mesh");
+    outputs.add_output(o.output_ply, "support mesh");
+  }
+  outputs.add_optional_output(o.report, "report");
+  double read_seconds = 0;
+  const Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
+  progress.stage("detecting reflective symmetries of " + std::to_string(num_faces(input.mesh)) + " faces");
+  Stopwatch watch;
+  std::vector<Symmetry> found;
+  SMS::detect_reflective_symmetries(input.mesh, std::back_inserter(found),
+                                    SMS::parameters::number_of_samples(o.samples)
+                                      .random_seed(o.seed)
+                                      .number_of_threads(o.threads)
+                                      .maximum_number_of_symmetries(o.max_symmetries)
+                                      .minimum_support(o.min_support));
+  const double seconds = watch.seconds();
+  progress.done();
+  if(!o.output_ply.empty()) {
+    if(found.empty())
+      throw Cli_error("no reflective symmetry found: no support mesh to write");
+    progress.stage("writing " + o.output_ply);
+    const std::vector<double> support = per_input_face(input, found.front().support, 0.0);
+    outputs.stage(o.output_ply, true, [&](std::ostream& out) {
+      write_support_ply(out, input.points, input.triangles, support);
+    });
+  }
+  if(!o.report.empty()) {
+    Json report = input_report("symmetry detect", o.input, input);
+    Json parameters = Json::object();
+    parameters["samples"] = o.samples;
+    parameters["seed"] = o.seed;
+    parameters["max_symmetries"] = o.max_symmetries;
+    parameters["min_support"] = o.min_support;
+    report["parameters"] = parameters;
+    Json planes = Json::array();
+    for(const Symmetry& s : found) {
+      Json p = plane_json(s);
+      p["score"] = s.score;
+      p["support"] = s.support_fraction;
+      planes.push_back(p);
+    }
+    report["planes"] = planes;
+    stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(),
+                 {{"support_mesh", o.output_ply}});
+  }
+  outputs.commit();
+  std::cout << o.input << ": " << found.size() << " reflective symmetr" << (found.size() == 1 ? "y" : "ies")
+            << " in " << seconds << " s\n";
+  for(const Symmetry& s : found)
+    std::cout << "  plane " << plane_text(s) << "  score " << s.score << "  support " << s.support_fraction << '\n';
+  return 0;
+}
+
+// Symmetrizes `input.mesh` in place; returns the result and the symmetry used.
+SMS::Symmetrization_result<Kernel> symmetrize_input(const Symmetrize_options& o, Input_mesh& input,
+                                                    Progress& progress, Symmetry& symmetry,
+                                                    double& detect_seconds, bool& detected)
+{
+  symmetry = symmetry_of(o, input.mesh, progress, detect_seconds, detected);
+  progress.stage("symmetrizing " + std::to_string(num_vertices(input.mesh)) + " vertices about the plane " +
+                 plane_text(symmetry));
+  std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
+  auto result = SMS::symmetrize(input.mesh, std::vector<Symmetry>{symmetry},
+                                SMS::parameters::number_of_iterations(o.iterations)
+                                  .number_of_levels(o.levels)
+                                  .final_symmetry_weight(o.final_weight)
+                                  .number_of_threads(o.threads)
+                                  .progress_callback(on_progress));
+  progress.done();
+  return result;
+}
+
+void add_symmetrization_report(Json& report, const SMS::Symmetrization_result<Kernel>& r,
+                               const Symmetry& s, bool detected, double detect_seconds)
+{
+  report["plane"] = plane_json(s);
+  report["plane_detected"] = detected;
+  report["seconds_detection"] = detect_seconds;
+  report["symmetry_error_before"] = r.symmetry_error_before;
+  report["symmetry_error_after"] = r.symmetry_error_after;
+  report["distortion"] = r.distortion;
+  report["levels"] = Json(r.level_sizes);
+  report["symmetry_errors"] = Json(r.symmetry_errors);
+}
+
+int run_symmetrize(const Symmetrize_options& o)
+{
+  Stopwatch total;
+  Progress progress("symmetry symmetrize", o.quiet, o.verbose);
+  Output_files outputs;
+  outputs.add_input(o.input);
+  if(!o.plane.empty())
+    parse_plane(o.plane); // a bad plane costs nothing
+  if(!o.output_off.empty()) {
+    require_extension(o.output_off, ".off", "symmetrized mesh");
+    outputs.add_output(o.output_off, "symmetrized mesh");
+  }
+  outputs.add_optional_output(o.map, "symmetric map");
+  outputs.add_optional_output(o.report, "report");
+  double read_seconds = 0;
+  Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
+  Stopwatch watch;
+  Symmetry symmetry;
+  double detect_seconds = 0;
+  bool detected = false;
+  const auto r = symmetrize_input(o, input, progress, symmetry, detect_seconds, detected);
+  const double seconds = watch.seconds();
+  const std::vector<Point_3> points = moved_points(input, input.mesh);
+  if(!o.output_off.empty()) {
+    progress.stage("writing " + o.output_off);
+    outputs.stage(o.output_off, false, [&](std::ostream& out) { write_off(out, points, input.triangles); });
+  }
+  if(!o.map.empty()) {
+    progress.stage("writing " + o.map);
+    outputs.stage(o.map, false, [&](std::ostream& out) { write_map(out, input, input.mesh, r.symmetric_map.front()); });
+  }
+  if(!o.report.empty()) {
+    Json report = input_report("symmetry symmetrize", o.input, input);
+    Json parameters = Json::object();
+    parameters["iterations"] = o.iterations;
+    parameters["levels"] = o.levels;
+    parameters["final_weight"] = o.final_weight;
+    report["parameters"] = parameters;
+    add_symmetrization_report(report, r, symmetry, detected, detect_seconds);
+    stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(),
+                 {{"mesh", o.output_off}, {"map", o.map}});
+  }
+  outputs.commit();
+  std::cout << o.input << ": symmetry error " << r.symmetry_error_before << " -> " << r.symmetry_error_after
+            << " (of the bounding-box diagonal), distortion " << r.distortion << ", " << seconds << " s\n";
+  return 0;
+}
+
+int run_enhance(const Enhance_options& o)
+{
+  Stopwatch total;
+  Progress progress("symmetry enhance", o.quiet, o.verbose);
+  Output_files outputs;
+  outputs.add_input(o.input);
+  if(!std::isfinite(o.amount))
+    throw Usage_error("--amount must be a finite number");
+  if(!o.plane.empty())
+    parse_plane(o.plane);
+  if(!o.symmetric.empty()) {
+    outputs.add_input(o.symmetric);
+    if(!o.plane.empty())
+      throw Usage_error("give either --symmetric or --plane, not both");
+  }
+  require_extension(o.output_off, ".off", "enhanced mesh");
+  outputs.add_output(o.output_off, "enhanced mesh");
+  outputs.add_optional_output(o.report, "report");
+  double read_seconds = 0;
+  Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
+  Stopwatch watch;
+  std::vector<Point_3> symmetric, original = input.points;
+  Json report = input_report("symmetry enhance", o.input, input);
+  if(!o.symmetric.empty()) {
+    // A symmetrized version given: the residuals are the differences, nothing to solve.
+    double more = 0;
+    const Input_mesh sym = read_input_mesh(o.symmetric, progress, more);
+    read_seconds += more;
+    if(sym.points.size() != input.points.size() || sym.triangles != input.triangles)
+      throw Cli_error("'" + o.symmetric + "' does not have the vertices and faces of '" + o.input + "'");
+    symmetric = sym.points;
+  } else {
+    Symmetry symmetry;
+    double detect_seconds = 0;
+    bool detected = false;
+    const auto r = symmetrize_input(o, input, progress, symmetry, detect_seconds, detected);
+    symmetric = moved_points(input, input.mesh);
+    add_symmetrization_report(report, r, symmetry, detected, detect_seconds);
+  }
+  std::vector<Point_3> enhanced(original.size());
+  for(std::size_t i = 0; i < original.size(); ++i)
+    enhanced[i] = symmetric[i] + (original[i] - symmetric[i]) * (1 - o.amount);
+  const double seconds = watch.seconds();
+  progress.stage("writing " + o.output_off);
+  outputs.stage(o.output_off, false, [&](std::ostream& out) { write_off(out, enhanced, input.triangles); });
+  if(!o.report.empty()) {
+    report["amount"] = o.amount;
+    stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(), {{"mesh", o.output_off}});
+  }
+  outputs.commit();
+  std::cout << o.input << ": amount " << o.amount << " written to " << o.output_off << " in " << seconds << " s\n";
+  return 0;
+}
+
+std::vector<CGAL::IO::Color> read_vertex_colours(const std::string& path, std::size_t expected,
+                                                 std::size_t merged)
+{
+  if(!std::ifstream(path, std::ios::binary))
+    throw Cli_error("cannot read '" + path + "': no such file or unreadable");
+  std::vector<Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  std::vector<CGAL::IO::Color> colours, face_colours;
+  bool ok = false;
+  try {
+    // (CGAL reads face and vertex colours through iterators of one type.)
+    ok = CGAL::IO::read_PLY(path, points, polygons,
+                            CGAL::parameters::vertex_color_output_iterator(std::back_inserter(colours))
+                              .face_color_output_iterator(std::back_inserter(face_colours))
+                              .verbose(false));
+  } catch(const std::exception&) {
+    ok = false;
+  }
+  if(!ok)
+    throw Cli_error("cannot read '" + path + "': not a valid PLY file");
+  if(colours.size() != points.size() || colours.empty())
+    throw Cli_error("'" + path + "' has no vertex colours (red, green, blue)");
+  if(points.size() != expected && points.size() != merged)
+    throw Cli_error("'" + path + "' has " + std::to_string(points.size()) + " vertices, the mesh " +
+                    std::to_string(expected));
+  return colours;
+}
+
+int run_transfer(const Transfer_options& o)
+{
+  Stopwatch total;
+  Progress progress("symmetry transfer", o.quiet, o.verbose);
+  Output_files outputs;
+  const std::string colour_file = o.colors.empty() ? o.input : o.colors;
+  outputs.add_input(o.input);
+  outputs.add_input(colour_file);
+  if(!o.plane.empty())
+    parse_plane(o.plane);
+  require_extension(o.output_ply, ".ply", "coloured mesh");
+  outputs.add_output(o.output_ply, "coloured mesh");
+  outputs.add_optional_output(o.report, "report");
+  double read_seconds = 0;
+  const Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
+  // The file's vertex count (before duplicate points were merged).
+  std::size_t file_vertices = 0;
+  for(std::size_t i : input.input_index)
+    file_vertices = (std::max)(file_vertices, i + 1);
+  {
+    std::vector<Point_3> p;
+    std::vector<std::vector<std::size_t>> f;
+    if(CGAL::IO::read_polygon_soup(o.input, p, f, CGAL::parameters::verbose(false)))
+      file_vertices = p.size();
+  }
+  Stopwatch read_colours;
+  // Colours per vertex of the file, or per point once duplicates are merged (as the tool writes).
+  const std::vector<CGAL::IO::Color> read = read_vertex_colours(colour_file, file_vertices, input.points.size());
+  std::vector<CGAL::IO::Color> file_colours = read;
+  if(read.size() != file_vertices) { // per merged point: spread to the file's vertices
+    file_colours.assign(file_vertices, CGAL::IO::Color());
+    for(std::size_t p = 0; p < input.points.size(); ++p)
+      file_colours[input.input_index[p]] = read[p];
+  }
+  read_seconds += read_colours.seconds();
+  Stopwatch watch;
+  Symmetry symmetry;
+  double detect_seconds = 0;
+  bool detected = false;
+  symmetry = symmetry_of(o, input.mesh, progress, detect_seconds, detected);
+  // Colours of the mesh's vertices, through the points.
+  Mesh mesh = input.mesh;
+  auto colour = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:transfer_colour").first;
+  for(Mesh::Vertex_index v : mesh.vertices())
+    colour[v] = file_colours[input.input_index[input.vertex_point[v]]];
+  progress.stage(std::string(o.mode == "copy" ? "copying" : "blending") + " vertex colours across the plane " +
+                 plane_text(symmetry));
+  SMS::transfer_vertex_attribute(mesh, symmetry, colour,
+                                 SMS::parameters::transfer_mode(o.mode == "copy" ? SMS::Transfer_mode::COPY
+                                                                                 : SMS::Transfer_mode::BLEND)
+                                   .source_side(o.from == "positive" ? 1 : -1)
+                                   .number_of_threads(o.threads));
+  std::vector<CGAL::IO::Color> colours(input.points.size());
+  for(std::size_t p = 0; p < input.points.size(); ++p)
+    colours[p] = file_colours[input.input_index[p]];
+  std::size_t changed = 0;
+  for(Mesh::Vertex_index v : mesh.vertices()) {
+    const std::size_t p = input.vertex_point[v];
+    if(colour[v] != colours[p])
+      ++changed;
+    colours[p] = colour[v];
+  }
+  const double seconds = watch.seconds();
+  progress.stage("writing " + o.output_ply);
+  outputs.stage(o.output_ply, true, [&](std::ostream& out) {
+    write_vertex_coloured_ply(out, input.points, input.triangles, colours);
+  });
+  if(!o.report.empty()) {
+    Json report = input_report("symmetry transfer", o.input, input);
+    report["colors"] = colour_file;
+    report["mode"] = o.mode;
+    report["from"] = o.from;
+    report["plane"] = plane_json(symmetry);
+    report["plane_detected"] = detected;
+    report["seconds_detection"] = detect_seconds;
+    report["vertices_changed"] = changed;
+    stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(), {{"mesh", o.output_ply}});
+  }
+  outputs.commit();
+  std::cout << o.input << ": colours " << (o.mode == "copy" ? "copied from the " + o.from + " side" : std::string("blended"))
+            << " across the plane " << plane_text(symmetry) << " in " << seconds << " s\n";
+  return 0;
+}
+
+} // namespace
+
+void add_symmetry_command(CLI::App& app, std::function<int()>& run)
+{
+  CLI::App* symmetry = app.add_subcommand(
+    "symmetry", "Reflective symmetries of a triangle mesh: detect, symmetrize, enhance, transfer attributes.");
+  symmetry->require_subcommand(1);
+
+  auto d = std::make_shared<Detect_options>();
+  CLI::App* detect = symmetry->add_subcommand(
+    "detect", "Detect the planar reflective symmetries (global and partial), best first.");
+  add_common_options(detect, *d, false);
+  detect->add_option("--report", d->report,
+                     "JSON report: planes (unit normal n and offset d of n.x = d, coefficients "
+                     "a,b,c,d, score, support), seconds");
+  detect->add_option("-o,--output", d->output_ply,
+                     "The mesh with each face coloured by its support for the best plane (.ply, "
+                     "float face property 'support')");
+  detect->add_option("--max-symmetries", d->max_symmetries, "Largest number of planes reported")
+    ->capture_default_str();
+  detect->add_option("--min-support", d->min_support, "Smallest support fraction of a plane, in [0, 1]")
+    ->capture_default_str();
+  detect->callback([d, &run]() { run = [d]() { return run_detect(*d); }; });
+
+  auto s = std::make_shared<Symmetrize_options>();
+  CLI::App* sym = symmetry->add_subcommand(
+    "symmetrize", "Warp the mesh (same vertices and faces) to be symmetric about a plane, "
+                  "changing its shape as little as possible.");
+  add_common_options(sym, *s, true);
+  sym->add_option("-o,--output", s->output_off, "The symmetrized mesh (.off; the input's vertices and faces, in order)");
+  sym->add_option("--map", s->map,
+                  "The symmetric map: per vertex, the face and barycentric coordinates of its mirror point (text)");
+  sym->add_option("--report", s->report,
+                  "JSON report: plane, symmetry_error_before, symmetry_error_after, distortion, seconds");
+  sym->add_option("--iterations", s->iterations, "Steps of alpha from 0 to 1 on the coarsest level (>= 1)")
+    ->capture_default_str();
+  sym->add_option("--levels", s->levels, "Levels of the multiresolution hierarchy (0: automatic, 1: none)")
+    ->capture_default_str();
+  sym->add_option("--final-weight", s->final_weight,
+                  "Weight of symmetry against shape in the last steps (> 0): larger, less asymmetry and more "
+                  "distortion where the two sides have no matching vertices")
+    ->capture_default_str();
+  sym->callback([s, &run]() { run = [s]() { return run_symmetrize(*s); }; });
+
+  auto e = std::make_shared<Enhance_options>();
+  CLI::App* enhance = symmetry->add_subcommand(
+    "enhance", "Move the mesh between or beyond its symmetric and its input shape: amount 1 is "
+               "symmetric, 0 the input, below 0 exaggerates the asymmetries.");
+  add_common_options(enhance, *e, true);
+  enhance->add_option("--amount", e->amount, "The amount t (position = symmetric + (1 - t) residual)")->required();
+  enhance->add_option("-o,--output", e->output_off, "The enhanced mesh (.off)")->required();
+  enhance->add_option("--symmetric", e->symmetric,
+                      "The symmetrized mesh written by 'symmetry symmetrize' (no solve: instant)");
+  enhance->add_option("--report", e->report, "JSON report");
+  enhance->add_option("--iterations", e->iterations, "As for symmetrize")->capture_default_str();
+  enhance->add_option("--levels", e->levels, "As for symmetrize")->capture_default_str();
+  enhance->add_option("--final-weight", e->final_weight, "As for symmetrize")->capture_default_str();
+  enhance->callback([e, &run]() { run = [e]() { return run_enhance(*e); }; });
+
+  auto t = std::make_shared<Transfer_options>();
+  CLI::App* transfer = symmetry->add_subcommand(
+    "transfer", "Transfer vertex colours from one side of the symmetry plane to the other "
+                "(or blend both sides) through the symmetric map.");
+  add_common_options(transfer, *t, true);
+  transfer->add_option("--colors", t->colors,
+                       "PLY with the vertex colours, the same vertices as IN in the same order (default: IN)");
+  transfer->add_option("-o,--output", t->output_ply, "The mesh with the transferred vertex colours (.ply)")->required();
+  transfer->add_option("--mode", t->mode, "copy (one side onto the other) or blend (both sides, symmetric)")
+    ->capture_default_str()
+    ->check(CLI::IsMember({"copy", "blend"}));
+  transfer->add_option("--from", t->from,
+                       "copy: the side copied, positive (where the plane's normal points) or negative")
+    ->capture_default_str()
+    ->check(CLI::IsMember({"positive", "negative"}));
+  transfer->add_option("--report", t->report, "JSON report");
+  transfer->callback([t, &run]() { run = [t]() { return run_transfer(*t); }; });
+}
+
+} // namespace shape_analysis_cli

@@ -1,0 +1,602 @@
+// Tests of CGAL::Surface_mesh_symmetrization: detect_reflective_symmetries() finds the plane of
+// procedural symmetric shapes in random poses (within 0.5 degree), and the known planes of CGAL's
+// meshes; results do not depend on the pose or the thread count; symmetrize() brings a symmetric
+// shape bent by a smooth asymmetric warp back close to the unbent shape with a small symmetry
+// error and less distortion than the naive baseline; restore_asymmetry() gives the input back;
+// enhance_symmetry() scales the residuals; the symmetric map of a symmetric mesh is exact, for a
+// reflection and for a rotation; transfer_vertex_attribute() maps one side's values onto the
+// other; Polyhedron_3 and vertex point maps work; bad input is refused with Bad_input.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <CGAL/Surface_mesh_symmetrization/detect_reflective_symmetries.h>
+#include <CGAL/Surface_mesh_symmetrization/internal/Procedural_symmetric_shapes.h>
+#include <CGAL/Surface_mesh_symmetrization/symmetrize.h>
+#include <CGAL/Surface_mesh_symmetrization/transfer_vertex_attribute.h>
+#include <CGAL/Shape_analysis/internal/Procedural_shapes.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point;
+typedef Kernel::Vector_3 Vector;
+typedef Kernel::Plane_3 Plane;
+typedef CGAL::Surface_mesh<Point> Mesh;
+namespace SY = CGAL::Surface_mesh_symmetrization;
+namespace SYI = CGAL::Surface_mesh_symmetrization::internal;
+namespace SAI = CGAL::Shape_analysis::internal;
+typedef SY::Symmetry<Kernel> Symmetry;
+typedef SAI::Vector_3d Vector_3d;
+
+const double pi = 3.14159265358979323846;
+
+Mesh to_mesh(const SYI::Procedural_mesh& m)
+{
+  Mesh mesh;
+  std::vector<Mesh::Vertex_index> v;
+  for(const auto& p : m.points)
+    v.push_back(mesh.add_vertex(Point(p[0], p[1], p[2])));
+  for(const auto& t : m.triangles)
+    mesh.add_face(v[t[0]], v[t[1]], v[t[2]]);
+  return mesh;
+}
+
+Mesh to_mesh(const SAI::Labelled_triangle_mesh& m)
+{
+  Mesh mesh;
+  SAI::fill_polygon_mesh(m, mesh);
+  return mesh;
+}
+
+Mesh read_data_mesh(const std::string& name)
+{
+  Mesh m;
+  const std::string path = std::string(SHAPE_ANALYSIS_DATA_DIR) + "/" + name;
+  if(!CGAL::IO::read_polygon_mesh(path, m) || faces(m).empty())
+    ADD_FAILURE() << "cannot read " << path;
+  return m;
+}
+
+// A rotation about a skew axis and a translation.
+SAI::Rigid_transform motion(int k)
+{
+  const Vector_3d axes[3] = {SAI::Vector_3d(1, 2, -0.7), SAI::Vector_3d(-0.3, 0.4, 1), SAI::Vector_3d(0.9, -1, 0.2)};
+  return SAI::Rigid_transform::from_axis_angle(axes[k % 3], 0.7 + 0.9 * k, SAI::Vector_3d(3 - k, -5 + 2 * k, 2));
+}
+
+void move(Mesh& m, const SAI::Rigid_transform& t)
+{
+  for(auto v : vertices(m)) {
+    const Point& p = m.point(v);
+    const Vector_3d q = t(Vector_3d(p.x(), p.y(), p.z()));
+    m.point(v) = Point(q.x, q.y, q.z);
+  }
+}
+
+// The unit normal and offset of a symmetry's plane (n.x = d).
+std::pair<Vector_3d, double> plane_of(const Symmetry& s)
+{
+  const SYI::Plane_3d p = SYI::plane_of(s, "test");
+  return {p.normal, p.offset};
+}
+
+double angle_degrees(const Vector_3d& a, const Vector_3d& b)
+{
+  const double c = std::abs(SAI::dot(a, b)) / (a.length() * b.length());
+  return std::acos((std::min)(1.0, c)) * 180 / pi;
+}
+
+std::vector<Symmetry> detect(const Mesh& m, std::size_t max = 5, std::size_t threads = 0)
+{
+  std::vector<Symmetry> s;
+  SY::detect_reflective_symmetries(m, std::back_inserter(s),
+                                   SY::parameters::maximum_number_of_symmetries(max).number_of_threads(threads));
+  return s;
+}
+
+SYI::Surface surface_of(const Mesh& m)
+{
+  return SYI::read_mesh(m, get(CGAL::vertex_point, m), SAI::Point_to_vector<Kernel>{Kernel()}, "test").surface;
+}
+
+std::vector<Vector_3d> points_of(const Mesh& m)
+{
+  std::vector<Vector_3d> p;
+  for(auto v : vertices(m))
+    p.emplace_back(m.point(v).x(), m.point(v).y(), m.point(v).z());
+  return p;
+}
+
+// RMS distance between corresponding vertices, relative to the bounding-box diagonal of `a`.
+double rms_vertex_distance(const Mesh& a, const Mesh& b)
+{
+  double sum = 0;
+  std::size_t n = 0;
+  auto vb = vertices(b).begin();
+  for(auto v : vertices(a)) {
+    sum += CGAL::squared_distance(a.point(v), b.point(*vb++));
+    ++n;
+  }
+  return std::sqrt(sum / double(n)) / surface_of(a).diagonal();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Detection
+
+TEST(Detection, ProceduralShapeInRandomPosesGivesItsPlaneWithinHalfADegree)
+{
+  // A four-legged body with a head: symmetric about y = 0 only, non-symmetric connectivity.
+  const Mesh original = to_mesh(SAI::mesh_procedural_shape(SAI::body_with_limbs(0, true), 0.12));
+  for(int k = 0; k < 3; ++k) {
+    Mesh m = original;
+    const SAI::Rigid_transform t = motion(k);
+    move(m, t);
+    const std::vector<Symmetry> s = detect(m);
+    ASSERT_FALSE(s.empty());
+    const auto p = plane_of(s.front());
+    // The image of the plane y = 0: normal R (0, 1, 0) through the image of the origin.
+    const Vector_3d n = Vector_3d(t.rotation[0].y, t.rotation[1].y, t.rotation[2].y);
+    EXPECT_LT(angle_degrees(p.first, n), 0.5) << "pose " << k;
+    const double offset = SAI::dot(p.first, t.translation);
+    EXPECT_LT(std::abs(std::abs(p.second) - std::abs(offset)), 0.005 * surface_of(m).diagonal());
+    EXPECT_LT(s.front().score, 0.002);
+    EXPECT_GT(s.front().support_fraction, 0.95);
+    EXPECT_EQ(s.front().support.size(), num_faces(m));
+    // The ranking: scores increase.
+    for(std::size_t i = 1; i < s.size(); ++i)
+      EXPECT_LE(s[i - 1].score, s[i].score);
+  }
+}
+
+TEST(Detection, ExactlySymmetricMeshGivesAPerfectScore)
+{
+  const Mesh m = to_mesh(SYI::symmetric_blob(24, 48));
+  const std::vector<Symmetry> s = detect(m);
+  ASSERT_FALSE(s.empty());
+  EXPECT_LT(angle_degrees(plane_of(s.front()).first, Vector_3d(0, 1, 0)), 0.05);
+  EXPECT_LT(s.front().score, 1e-4);
+  EXPECT_GT(s.front().support_fraction, 0.99);
+  EXPECT_TRUE(s.front().is_reflection);
+  // The transformation is the reflection of the plane: it maps a vertex onto the mesh's mirror.
+  const Point p = m.point(*vertices(m).begin());
+  const Point q = s.front().transformation.transform(p);
+  EXPECT_NEAR(q.y(), -p.y(), 1e-3);
+}
+
+TEST(Detection, DoesNotDependOnTheThreadCount)
+{
+  const Mesh m = read_data_mesh("cow.off");
+  const std::vector<Symmetry> a = detect(m, 5, 1), b = detect(m, 5, 2);
+  ASSERT_EQ(a.size(), b.size());
+  for(std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].plane, b[i].plane);
+    EXPECT_EQ(a[i].score, b[i].score);
+    EXPECT_EQ(a[i].support, b[i].support);
+  }
+}
+
+TEST(Detection, SameScoreInAnyPose)
+{
+  Mesh m = read_data_mesh("triceratops.off");
+  const double before = detect(m, 1).front().score;
+  move(m, motion(1));
+  const double after = detect(m, 1).front().score;
+  EXPECT_NEAR(after, before, 0.1 * before);
+}
+
+// The planes of CGAL's meshes (measured once, and checked against the exhaustive search of
+// bench_symmetry_detection): the best plane is the mesh's left-right plane with a small score.
+TEST(Detection, CgalMeshesGiveTheirLeftRightPlane)
+{
+  struct Case
+  {
+    const char* name;
+    Vector_3d normal;
+    double max_score;
+  };
+  const Case cases[] = {{"camel.off", Vector_3d(1, 0, 0), 0.001},     {"cow.off", Vector_3d(0, 0, 1), 0.002},
+                        {"triceratops.off", Vector_3d(0, 0, 1), 0.001}, {"homer.off", Vector_3d(1, 0, 0), 0.001},
+                        {"head.off", Vector_3d(0, 0, 1), 0.001}};
+  for(const Case& c : cases) {
+    const Mesh m = read_data_mesh(c.name);
+    const std::vector<Symmetry> s = detect(m, 3);
+    ASSERT_FALSE(s.empty()) << c.name;
+    EXPECT_LT(angle_degrees(plane_of(s.front()).first, c.normal), 1.0) << c.name;
+    EXPECT_LT(s.front().score, c.max_score) << c.name;
+    EXPECT_GT(s.front().support_fraction, 0.9) << c.name;
+  }
+  // man.off stands in a pose that is not symmetric: its best plane still has most of the body.
+  const Mesh man = read_data_mesh("man.off");
+  const std::vector<Symmetry> s = detect(man, 3);
+  ASSERT_FALSE(s.empty());
+  EXPECT_LT(s.front().score, 0.015);
+  EXPECT_GT(s.front().support_fraction, 0.6);
+}
+
+TEST(Detection, OpenMeshIsSupported)
+{
+  const Mesh m = read_data_mesh("head.off"); // open at the neck
+  ASSERT_FALSE(CGAL::is_closed(m));
+  EXPECT_FALSE(detect(m, 1).empty());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Symmetrization
+
+TEST(Symmetrization, WarpedSymmetricShapeComesBackCloseToTheUnwarpedShape)
+{
+  const SYI::Procedural_mesh blob = SYI::symmetric_blob(24, 48);
+  const Mesh unwarped = to_mesh(blob);
+  SYI::Procedural_mesh warped_blob = blob;
+  for(auto& p : warped_blob.points)
+    p = SYI::asymmetric_warp(p, 0.005);
+  Mesh m = to_mesh(warped_blob);
+  const Mesh warped = m;
+  const double distance_before = rms_vertex_distance(unwarped, warped);
+  const Symmetry s = SY::reflective_symmetry<Kernel>(Plane(0, 1, 0, 0));
+  const auto r = SY::symmetrize(m, std::vector<Symmetry>{s});
+  const double distance_after = rms_vertex_distance(unwarped, m);
+  EXPECT_LT(distance_after, 0.5 * distance_before);
+  EXPECT_LT(r.symmetry_error_after, 1e-4);
+  EXPECT_LT(r.symmetry_error_after, 0.1 * r.symmetry_error_before);
+  // Less distortion than moving each vertex halfway to the image of its mirror point.
+  const SYI::Surface surface = surface_of(warped);
+  const std::vector<Vector_3d> naive = SYI::naive_symmetrization(surface, SYI::affine_of(s, "test"), 0);
+  EXPECT_LT(r.distortion, SYI::edge_distortion(surface, surface.points, naive));
+  EXPECT_LT(r.symmetry_error_after, SYI::symmetry_error(surface, naive, SYI::affine_of(s, "test"), 0));
+  // The result's figures are those of the mesh as written.
+  EXPECT_EQ(r.symmetric_points.size(), num_vertices(m));
+  std::size_t i = 0;
+  for(auto v : vertices(m))
+    EXPECT_EQ(m.point(v), r.symmetric_points[i++]);
+  EXPECT_NEAR(r.distortion, SYI::edge_distortion(surface, surface.points, points_of(m)), 1e-12);
+  ASSERT_FALSE(r.symmetry_errors.empty());
+  EXPECT_EQ(r.symmetry_errors.size(), r.iteration_alphas.size());
+  EXPECT_EQ(r.iteration_alphas.back(), 1.0);
+}
+
+TEST(Symmetrization, NearlySymmetricCgalMeshBecomesSymmetric)
+{
+  Mesh m = read_data_mesh("triceratops.off");
+  const Mesh input = m;
+  const Symmetry s = detect(m, 1).front();
+  const auto r = SY::symmetrize(m, std::vector<Symmetry>{s});
+  EXPECT_LT(r.symmetry_error_after, 0.2 * r.symmetry_error_before);
+  EXPECT_LT(r.symmetry_error_after, 1e-5);
+  const SYI::Surface surface = surface_of(input);
+  const std::vector<Vector_3d> naive = SYI::naive_symmetrization(surface, SYI::affine_of(s, "test"), 0);
+  EXPECT_LT(r.distortion, SYI::edge_distortion(surface, surface.points, naive));
+  // The residuals are small: the triceratops is nearly symmetric.
+  EXPECT_LT(rms_vertex_distance(input, m), 1e-3);
+}
+
+TEST(Symmetrization, PosedMeshGetsMoreSymmetric)
+{
+  for(const char* name : {"cow.off", "head.off", "camel.off", "homer.off", "man.off"}) {
+    Mesh m = read_data_mesh(name);
+    const Symmetry s = detect(m, 1).front();
+    const auto r = SY::symmetrize(m, std::vector<Symmetry>{s});
+    EXPECT_LT(r.symmetry_error_after, r.symmetry_error_before) << name;
+    EXPECT_LT(r.distortion, 0.5) << name;
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m)) << name;
+  }
+}
+
+TEST(Symmetrization, LargerFinalWeightTradesDistortionForSymmetry)
+{
+  // The cow's two sides have no matching vertices and its tail hangs to one side: a larger
+  // weight of the symmetry term in the constrained steps gives a smaller error and more
+  // distortion, down to the acceptance figure of 1e-4.
+  const Mesh input = read_data_mesh("cow.off");
+  const Symmetry s = detect(input, 1).front();
+  Mesh loose = input, tight = input;
+  const auto a = SY::symmetrize(loose, std::vector<Symmetry>{s});
+  const auto b = SY::symmetrize(tight, std::vector<Symmetry>{s}, SY::parameters::final_symmetry_weight(1e4));
+  EXPECT_LT(b.symmetry_error_after, 0.5 * a.symmetry_error_after);
+  EXPECT_LT(b.symmetry_error_after, 1e-4);
+  EXPECT_GT(b.distortion, a.distortion);
+}
+
+TEST(Symmetrization, RestoreGivesTheInputBack)
+{
+  Mesh m = read_data_mesh("cow.off");
+  const Mesh input = m;
+  const auto r = SY::symmetrize(m, std::vector<Symmetry>{detect(m, 1).front()});
+  EXPECT_GT(rms_vertex_distance(input, m), 1e-5); // it moved
+  SY::restore_asymmetry(m, r);
+  const double diagonal = surface_of(input).diagonal();
+  auto vi = vertices(input).begin();
+  double worst = 0;
+  for(auto v : vertices(m))
+    worst = (std::max)(worst, std::sqrt(CGAL::squared_distance(m.point(v), input.point(*vi++))));
+  EXPECT_LT(worst, 1e-9 * diagonal);
+}
+
+TEST(Symmetrization, EnhancementScalesTheResiduals)
+{
+  Mesh m = read_data_mesh("cow.off");
+  const Mesh input = m;
+  const auto r = SY::symmetrize(m, std::vector<Symmetry>{detect(m, 1).front()});
+  for(double t : {1.0, 0.5, -1.0, 2.0}) {
+    SY::enhance_symmetry(m, r, t);
+    std::size_t i = 0;
+    auto vi = vertices(input).begin();
+    for(auto v : vertices(m)) {
+      const Point expected = r.symmetric_points[i] + (input.point(*vi++) - r.symmetric_points[i]) * (1 - t);
+      ASSERT_LT(CGAL::squared_distance(m.point(v), expected), 1e-24) << "t = " << t;
+      ++i;
+    }
+  }
+}
+
+TEST(Symmetrization, DoesNotDependOnTheThreadCount)
+{
+  Mesh a = read_data_mesh("head.off"), b = a;
+  const Symmetry s = detect(a, 1).front();
+  const auto ra = SY::symmetrize(a, std::vector<Symmetry>{s}, SY::parameters::number_of_threads(1));
+  const auto rb = SY::symmetrize(b, std::vector<Symmetry>{s}, SY::parameters::number_of_threads(2));
+  EXPECT_EQ(ra.symmetric_points, rb.symmetric_points);
+  EXPECT_EQ(ra.symmetry_errors, rb.symmetry_errors);
+}
+
+TEST(Symmetrization, MultiresolutionLevelsAreMadeAndUsed)
+{
+  Mesh m = to_mesh(SYI::symmetric_blob(60, 120)); // 7,000 vertices
+  for(auto v : vertices(m)) {
+    const Point& p = m.point(v);
+    const auto q = SYI::asymmetric_warp({{p.x(), p.y(), p.z()}}, 0.02);
+    m.point(v) = Point(q[0], q[1], q[2]);
+  }
+  const auto r = SY::symmetrize(m, std::vector<Symmetry>{SY::reflective_symmetry<Kernel>(Plane(0, 1, 0, 0))},
+                                SY::parameters::coarsest_level_size(500));
+  ASSERT_GE(r.level_sizes.size(), 2u);
+  EXPECT_EQ(r.level_sizes.front(), num_vertices(m));
+  EXPECT_LT(r.level_sizes[1], r.level_sizes[0] / 4);
+  EXPECT_GT(r.iteration_levels.front(), 0u); // the coarsest level first
+  EXPECT_EQ(r.iteration_levels.back(), 0u);
+  EXPECT_LT(r.symmetry_error_after, 0.1 * r.symmetry_error_before);
+}
+
+TEST(Symmetrization, SymmetricMapOfASymmetricMeshIsExact)
+{
+  const Mesh m = to_mesh(SYI::symmetric_blob(20, 40, true));
+  const double diagonal = surface_of(m).diagonal();
+  // The reflection y -> -y, and the rotation by pi about z (an affine symmetry).
+  const Symmetry reflection = SY::reflective_symmetry<Kernel>(Plane(0, 1, 0, 0));
+  const Symmetry rotation =
+    SY::affine_symmetry<Kernel>(CGAL::Aff_transformation_3<Kernel>(-1, 0, 0, 0, -1, 0, 0, 0, 1));
+  for(const Symmetry* s : {&reflection, &rotation}) {
+    const std::vector<SY::Mirror_point> map = SY::compute_symmetric_map(m, *s);
+    ASSERT_EQ(map.size(), num_vertices(m));
+    std::vector<Mesh::Face_index> faces_in_order(faces(m).begin(), faces(m).end());
+    std::size_t i = 0;
+    for(auto v : vertices(m)) {
+      ASSERT_TRUE(map[i].found);
+      EXPECT_LT(map[i].distance, 1e-9 * diagonal);
+      // The image of the mirror point is the vertex.
+      Vector_3d p;
+      int c = 0;
+      for(auto u : vertices_around_face(halfedge(faces_in_order[map[i].face], m), m)) {
+        p += Vector_3d(m.point(u).x(), m.point(u).y(), m.point(u).z()) * map[i].barycentric[std::size_t(c++)];
+      }
+      const Point image = s->transformation.transform(Point(p.x, p.y, p.z));
+      EXPECT_LT(std::sqrt(CGAL::squared_distance(image, m.point(v))), 1e-9 * diagonal);
+      ++i;
+    }
+  }
+  // A rotation is not a reflection: copying sides needs one.
+  EXPECT_FALSE(rotation.is_reflection);
+}
+
+TEST(Symmetrization, RotationalSymmetryCanBeEnforced)
+{
+  SYI::Procedural_mesh blob = SYI::symmetric_blob(20, 40, true);
+  for(auto& p : blob.points)
+    p = SYI::asymmetric_warp(p, 0.005);
+  Mesh m = to_mesh(blob);
+  const Symmetry rotation =
+    SY::affine_symmetry<Kernel>(CGAL::Aff_transformation_3<Kernel>(-1, 0, 0, 0, -1, 0, 0, 0, 1));
+  const auto r = SY::symmetrize(m, std::vector<Symmetry>{rotation});
+  EXPECT_LT(r.symmetry_error_after, 0.2 * r.symmetry_error_before);
+}
+
+TEST(Symmetrization, PartialSymmetriesWeightedBySupport)
+{
+  // Two symmetries of the rotational blob at once, both with their support.
+  SYI::Procedural_mesh blob = SYI::symmetric_blob(20, 40, true);
+  for(auto& p : blob.points)
+    p = SYI::asymmetric_warp(p, 0.005);
+  Mesh m = to_mesh(blob);
+  Symmetry a = SY::reflective_symmetry<Kernel>(Plane(0, 1, 0, 0));
+  Symmetry b = SY::affine_symmetry<Kernel>(CGAL::Aff_transformation_3<Kernel>(-1, 0, 0, 0, -1, 0, 0, 0, 1));
+  a.support.assign(num_faces(m), 1.0);
+  b.support.assign(num_faces(m), 0.5);
+  const auto r = SY::symmetrize(m, std::vector<Symmetry>{a, b});
+  ASSERT_EQ(r.symmetric_map.size(), 2u);
+  EXPECT_LT(r.symmetry_error_after, 0.3 * r.symmetry_error_before);
+}
+
+TEST(Symmetrization, PolyhedronAndVertexPointMap)
+{
+  typedef CGAL::Polyhedron_3<Kernel> Polyhedron;
+  const SYI::Procedural_mesh blob = SYI::symmetric_blob(16, 32);
+  Polyhedron p;
+  {
+    SAI::Labelled_triangle_mesh l;
+    l.points = blob.points;
+    l.triangles = blob.triangles;
+    l.labels.assign(blob.triangles.size(), 0);
+    SAI::fill_polygon_mesh(l, p);
+  }
+  std::vector<Symmetry> s;
+  SY::detect_reflective_symmetries(p, std::back_inserter(s));
+  ASSERT_FALSE(s.empty());
+  EXPECT_LT(angle_degrees(plane_of(s.front()).first, Vector_3d(0, 1, 0)), 0.1);
+  // A Surface_mesh whose positions live in a separate, shifted property.
+  Mesh m = to_mesh(blob);
+  auto shifted = m.add_property_map<Mesh::Vertex_index, Point>("v:shifted").first;
+  for(auto v : vertices(m))
+    shifted[v] = m.point(v) + Vector(0, 2, 0);
+  std::vector<Symmetry> t;
+  SY::detect_reflective_symmetries(m, std::back_inserter(t), SY::parameters::vertex_point_map(shifted));
+  ASSERT_FALSE(t.empty());
+  const auto pl = plane_of(t.front());
+  EXPECT_NEAR(std::abs(pl.second), 2.0, 0.01); // the plane y = 2
+  const Point before = m.point(*vertices(m).begin());
+  const auto r = SY::symmetrize(m, std::vector<Symmetry>{t.front()}, SY::parameters::vertex_point_map(shifted));
+  EXPECT_EQ(m.point(*vertices(m).begin()), before); // the mesh's own points are untouched
+  EXPECT_LT(r.symmetry_error_after, 1e-6);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Attribute transfer
+
+TEST(Transfer, LeftSideValuesAreCopiedOntoTheRightSide)
+{
+  const Mesh m = to_mesh(SYI::symmetric_blob(24, 48));
+  Mesh mesh = m;
+  auto value = mesh.add_property_map<Mesh::Vertex_index, double>("v:value", 0.0).first;
+  auto colour = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:colour").first;
+  // A smooth scalar and red on the left (y > 0); nothing and blue on the right.
+  const auto f = [](const Point& p) { return std::sin(2 * p.x()) + p.z() * p.z(); };
+  for(auto v : vertices(mesh)) {
+    const Point& p = mesh.point(v);
+    value[v] = p.y() > 0 ? f(p) : -100.0;
+    colour[v] = p.y() > 0 ? CGAL::IO::Color(255, 0, 0) : CGAL::IO::Color(0, 0, 255);
+  }
+  const Symmetry s = SY::reflective_symmetry<Kernel>(Plane(0, 1, 0, 0)); // normal +y: left is positive
+  SY::transfer_vertex_attribute(mesh, s, value);
+  SY::transfer_vertex_attribute(mesh, s, colour);
+  for(auto v : vertices(mesh)) {
+    const Point& p = mesh.point(v);
+    if(std::abs(p.y()) < 1e-12)
+      continue; // on the plane: kept
+    EXPECT_NEAR(value[v], f(p), 1e-9);
+    EXPECT_EQ(colour[v], CGAL::IO::Color(255, 0, 0));
+  }
+  // The other way round.
+  for(auto v : vertices(mesh))
+    value[v] = mesh.point(v).y() < 0 ? f(mesh.point(v)) : 7.0;
+  SY::transfer_vertex_attribute(mesh, s, value, SY::parameters::source_side(-1));
+  for(auto v : vertices(mesh))
+    if(std::abs(mesh.point(v).y()) > 1e-12)
+      EXPECT_NEAR(value[v], f(mesh.point(v)), 1e-9);
+}
+
+TEST(Transfer, BlendMakesTheAttributeSymmetricThroughTheSymmetrizedMap)
+{
+  SYI::Procedural_mesh blob = SYI::symmetric_blob(24, 48);
+  for(auto& p : blob.points)
+    p = SYI::asymmetric_warp(p, 0.005);
+  Mesh mesh = to_mesh(blob);
+  const Symmetry s = SY::reflective_symmetry<Kernel>(Plane(0, 1, 0, 0));
+  const auto r = SY::symmetrize(mesh, std::vector<Symmetry>{s});
+  // Values of an asymmetric smooth function of the symmetrized positions.
+  const auto f = [](const Point& p) { return p.x() + 2 * p.y() + p.z() * p.z(); };
+  auto value = mesh.add_property_map<Mesh::Vertex_index, double>("v:value", 0.0).first;
+  for(auto v : vertices(mesh))
+    value[v] = f(mesh.point(v));
+  // Deform the mesh after: the map is tied to faces, so the transfer still pairs the same points.
+  std::vector<Point> symmetric;
+  for(auto v : vertices(mesh)) {
+    symmetric.push_back(mesh.point(v));
+    mesh.point(v) = mesh.point(v) + Vector(0.3 * mesh.point(v).z(), 0, 0);
+  }
+  SY::transfer_vertex_attribute(mesh, s, value,
+                                SY::parameters::transfer_mode(SY::Transfer_mode::BLEND).symmetric_map(r.symmetric_map[0]));
+  // Each vertex now holds the mean of f at itself and at its mirror image: a symmetric function.
+  std::size_t k = 0;
+  for(auto v : vertices(mesh)) {
+    const Point& p = symmetric[k++];
+    const Point mirror(p.x(), -p.y(), p.z());
+    EXPECT_NEAR(value[v], 0.5 * (f(p) + f(mirror)), 2e-3);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad input
+
+TEST(BadInput, RefusedWithAReason)
+{
+  using CGAL::Shape_analysis::Bad_input;
+  Mesh empty;
+  std::vector<Symmetry> out;
+  EXPECT_THROW(SY::detect_reflective_symmetries(empty, std::back_inserter(out)), Bad_input);
+  const Symmetry plane = SY::reflective_symmetry<Kernel>(Plane(0, 1, 0, 0));
+  EXPECT_THROW(SY::symmetrize(empty, std::vector<Symmetry>{plane}), Bad_input);
+
+  // A quad.
+  Mesh quad;
+  {
+    auto a = quad.add_vertex(Point(0, 0, 0)), b = quad.add_vertex(Point(1, 0, 0)),
+         c = quad.add_vertex(Point(1, 1, 0)), d = quad.add_vertex(Point(0, 1, 0));
+    quad.add_face(a, b, c, d);
+  }
+  EXPECT_THROW(SY::detect_reflective_symmetries(quad, std::back_inserter(out)), Bad_input);
+
+  // NaN coordinates.
+  Mesh nan = to_mesh(SYI::symmetric_blob(8, 8));
+  nan.point(*vertices(nan).begin()) = Point(std::nan(""), 0, 0);
+  EXPECT_THROW(SY::detect_reflective_symmetries(nan, std::back_inserter(out)), Bad_input);
+  EXPECT_THROW(SY::symmetrize(nan, std::vector<Symmetry>{plane}), Bad_input);
+
+  // No area: every point on a line.
+  Mesh flat;
+  {
+    auto a = flat.add_vertex(Point(0, 0, 0)), b = flat.add_vertex(Point(1, 0, 0)),
+         c = flat.add_vertex(Point(2, 0, 0));
+    flat.add_face(a, b, c);
+  }
+  EXPECT_THROW(SY::detect_reflective_symmetries(flat, std::back_inserter(out)), Bad_input);
+
+  // Degenerate planes and transformations.
+  EXPECT_THROW(SY::reflective_symmetry<Kernel>(Plane(0, 0, 0, 1)), Bad_input);
+  EXPECT_THROW(SY::reflective_symmetry<Kernel>(Plane(std::nan(""), 1, 0, 0)), Bad_input);
+  EXPECT_THROW(SY::affine_symmetry<Kernel>(CGAL::Aff_transformation_3<Kernel>(1, 0, 0, 0, 1, 0, 0, 0, 0)), Bad_input);
+  Mesh m = to_mesh(SYI::symmetric_blob(8, 8));
+  Symmetry broken = plane;
+  broken.transformation = CGAL::Aff_transformation_3<Kernel>(0, 0, 0, 0, 0, 0, 0, 0, 0, 1);
+  EXPECT_THROW(SY::symmetrize(m, std::vector<Symmetry>{broken}), Bad_input);
+
+  // Parameters out of range, no symmetry, wrong support size.
+  EXPECT_THROW(SY::detect_reflective_symmetries(m, std::back_inserter(out), SY::parameters::number_of_samples(5)), Bad_input);
+  EXPECT_THROW(SY::detect_reflective_symmetries(m, std::back_inserter(out), SY::parameters::minimum_support(2.0)), Bad_input);
+  EXPECT_THROW(SY::symmetrize(m, std::vector<Symmetry>{}), Bad_input);
+  EXPECT_THROW(SY::symmetrize(m, std::vector<Symmetry>{plane}, SY::parameters::number_of_iterations(0)), Bad_input);
+  EXPECT_THROW(SY::symmetrize(m, std::vector<Symmetry>{plane}, SY::parameters::shape_weight(-1.0)), Bad_input);
+  EXPECT_THROW(SY::symmetrize(m, std::vector<Symmetry>{plane}, SY::parameters::final_symmetry_weight(0.0)), Bad_input);
+  Symmetry short_support = plane;
+  short_support.support.assign(3, 1.0);
+  EXPECT_THROW(SY::symmetrize(m, std::vector<Symmetry>{short_support, plane}), Bad_input);
+
+  // The mesh is left unchanged by a refused call.
+  const Point first = m.point(*vertices(m).begin());
+  EXPECT_THROW(SY::symmetrize(m, std::vector<Symmetry>{broken}), Bad_input);
+  EXPECT_EQ(m.point(*vertices(m).begin()), first);
+
+  // Enhancement and transfer.
+  const auto r = SY::symmetrize(m, std::vector<Symmetry>{plane});
+  EXPECT_THROW(SY::enhance_symmetry(m, r, std::nan("")), Bad_input);
+  Mesh other = to_mesh(SYI::symmetric_blob(10, 10));
+  EXPECT_THROW(SY::restore_asymmetry(other, r), Bad_input);
+  auto value = m.add_property_map<Mesh::Vertex_index, double>("v:value", 0.0).first;
+  const Symmetry rotation =
+    SY::affine_symmetry<Kernel>(CGAL::Aff_transformation_3<Kernel>(-1, 0, 0, 0, -1, 0, 0, 0, 1));
+  EXPECT_THROW(SY::transfer_vertex_attribute(m, rotation, value), Bad_input); // COPY needs a reflection
+  EXPECT_THROW(SY::transfer_vertex_attribute(m, plane, value, SY::parameters::source_side(0)), Bad_input);
+  EXPECT_THROW(SY::transfer_vertex_attribute(m, plane, value,
+                                             SY::parameters::symmetric_map(std::vector<SY::Mirror_point>(2))),
+               Bad_input);
+}
+
+} // namespace

@@ -1,0 +1,104 @@
+cmake_minimum_required(VERSION 3.19)
+# `shape_analysis symmetry` end to end on CGAL's triceratops (mirror-symmetric about z = 0):
+#   detect: the report's best plane is z = 0 with a small score;
+#   symmetrize: the symmetrized mesh has the input's vertex and face counts, the map one line per
+#     vertex, the report a lower symmetry error after than before;
+#   enhance: from the symmetrized mesh (no solve), amount -1 written with the same counts;
+#   transfer: on an octahedron coloured red (x > 0), blue (x < 0) and green (x = 0), copying across
+#     x = 0 recolours exactly the one vertex of the negative side.
+#   cmake -DEXE=<tool> -DMESH=<triceratops.off> -DWORK=<dir> -P check_symmetry.cmake
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}")
+
+function(run_tool)
+  execute_process(COMMAND "${EXE}" ${ARGN} RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message(STATUS "${ARGN}\nexit ${r}\nstdout: ${out}\nstderr: ${err}")
+  if(NOT r EQUAL 0)
+    message(FATAL_ERROR "shape_analysis ${ARGN} failed: ${err}")
+  endif()
+endfunction()
+
+run_tool(symmetry detect "${MESH}" -q --report "${WORK}/detect.json" --output "${WORK}/support.ply")
+file(READ "${WORK}/detect.json" report)
+string(JSON n LENGTH "${report}" planes)
+if(n LESS 1)
+  message(FATAL_ERROR "no plane in the report")
+endif()
+string(JSON nz GET "${report}" planes 0 normal 2)
+string(JSON score GET "${report}" planes 0 score)
+string(JSON support GET "${report}" planes 0 support)
+string(JSON seconds GET "${report}" seconds)
+if(NOT (nz GREATER 0.999 OR nz LESS -0.999))
+  message(FATAL_ERROR "best plane normal z component ${nz}, expected +-1 (the plane z = 0)")
+endif()
+if(NOT score LESS 0.001 OR NOT support GREATER 0.9)
+  message(FATAL_ERROR "best plane score ${score} / support ${support}")
+endif()
+if(NOT EXISTS "${WORK}/support.ply")
+  message(FATAL_ERROR "support mesh not written")
+endif()
+
+run_tool(symmetry symmetrize "${MESH}" -q --output "${WORK}/sym.off" --map "${WORK}/map.txt"
+         --report "${WORK}/sym.json")
+file(STRINGS "${WORK}/sym.off" header LIMIT_COUNT 2)
+file(STRINGS "${MESH}" input_header LIMIT_COUNT 2)
+if(NOT header STREQUAL input_header)
+  message(FATAL_ERROR "symmetrized mesh header '${header}', expected '${input_header}'")
+endif()
+file(STRINGS "${WORK}/map.txt" map)
+list(LENGTH map n_map)
+list(GET input_header 1 counts)
+string(REGEX MATCH "^[0-9]+" n_vertices "${counts}")
+math(EXPR expected "${n_vertices} + 3")
+if(NOT n_map EQUAL expected)
+  message(FATAL_ERROR "map has ${n_map} lines, expected ${expected} (3 comment lines, one per vertex)")
+endif()
+file(READ "${WORK}/sym.json" sym)
+string(JSON before GET "${sym}" symmetry_error_before)
+string(JSON after GET "${sym}" symmetry_error_after)
+string(JSON distortion GET "${sym}" distortion)
+string(JSON seconds GET "${sym}" seconds)
+if(NOT after LESS before)
+  message(FATAL_ERROR "symmetry error ${before} -> ${after}: not lower")
+endif()
+
+run_tool(symmetry enhance "${MESH}" -q --symmetric "${WORK}/sym.off" --amount -1 --output "${WORK}/enhanced.off")
+file(STRINGS "${WORK}/enhanced.off" enhanced_header LIMIT_COUNT 2)
+if(NOT enhanced_header STREQUAL input_header)
+  message(FATAL_ERROR "enhanced mesh header '${enhanced_header}'")
+endif()
+
+file(WRITE "${WORK}/octahedron.ply" "ply
+format ascii 1.0
+element vertex 6
+property float x
+property float y
+property float z
+property uchar red
+property uchar green
+property uchar blue
+element face 8
+property list uchar int vertex_indices
+end_header
+1 0 0 255 0 0
+-1 0 0 0 0 255
+0 1 0 0 255 0
+0 -1 0 0 255 0
+0 0 1 0 255 0
+0 0 -1 0 255 0
+3 0 2 4
+3 2 1 4
+3 1 3 4
+3 3 0 4
+3 2 0 5
+3 1 2 5
+3 3 1 5
+3 0 3 5
+")
+run_tool(symmetry transfer "${WORK}/octahedron.ply" -q --plane 1,0,0,0 --output "${WORK}/transferred.ply"
+         --report "${WORK}/transfer.json")
+file(READ "${WORK}/transfer.json" transfer)
+string(JSON changed GET "${transfer}" vertices_changed)
+if(NOT changed EQUAL 1)
+  message(FATAL_ERROR "${changed} vertices recoloured, expected 1 (the blue one)")
+endif()
