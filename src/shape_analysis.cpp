@@ -38,6 +38,7 @@ int main(int argc, char** argv)
   add_partition_commands(app, run);
   add_coseg_command(app, run);
   add_symmetry_command(app, run);
+  add_points_command(app, run);
 
   try {
     app.parse(argc, argv);

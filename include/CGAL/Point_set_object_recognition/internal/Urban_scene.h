@@ -1,0 +1,820 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_URBAN_SCENE_H
+#define CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_URBAN_SCENE_H
+
+// Ground-truth data for object recognition in city LIDAR: a procedural street scene (sloped
+// ground with a two-lane road and raised sidewalks, buildings, trees and the small objects of
+// the thesis' classes, with clutter) made of triangles, scanned by a simulated mobile LIDAR (two
+// rotating line scanners tilted by +-30 degrees about the vertical, on a vehicle driving along the
+// centre line) and optionally by an airborne pass (vertical rays on a regular grid). Rays are cast
+// with CGAL's AABB tree, so occlusion and range-dependent density follow from the geometry.
+//
+// Deterministic: the scene is drawn from streams seeded by (seed, k) and every scan line from its
+// own stream seeded by (seed, line index), so that the points are identical for any thread count.
+//
+// Frame: x along the street (scanner path from x = 0 to street_length), y across (road centre at
+// y = 0), z up. Objects stand on the sidewalks (|y| in [road_half_width, facade_y]) or, for cars,
+// on the road next to the curb; buildings span |y| in [facade_y, back_y].
+
+#include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/internal/Parallel.h>
+#include <CGAL/Shape_analysis/internal/Random.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Point_set_3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Point_set_object_recognition {
+namespace internal {
+
+// Kinds of surfaces: background (ground, building, tree) and the object classes of the thesis.
+enum Object_class : int {
+  BACKGROUND = 0, GROUND = 1, BUILDING = 2, TREE = 3,
+  SHORT_POST = 10, TALL_POST, LAMP_POST, LIGHT_STANDARD, SIGN, TRAFFIC_LIGHT, CAR, FIRE_HYDRANT,
+  TRASH_CAN, NEWSPAPER_BOX, PARKING_METER, MAILING_BOX, RECYCLE_BIN, ADVERTISING_CYLINDER,
+  TRAFFIC_CONTROL_BOX, A_FRAME_SIGN
+};
+constexpr int first_object_class = SHORT_POST;
+constexpr int number_of_object_classes = A_FRAME_SIGN - SHORT_POST + 1;
+
+inline bool is_object_class(int c) { return c >= first_object_class && c <= A_FRAME_SIGN; }
+
+inline const char* object_class_name(int c)
+{
+  static const char* const objects[] = {
+    "short post", "tall post", "lamp post", "light standard", "sign", "traffic light", "car",
+    "fire hydrant", "trash can", "newspaper box", "parking meter", "mailing box", "recycle bin",
+    "advertising cylinder", "traffic control box", "A-frame sign"};
+  static const char* const background[] = {"background", "ground", "building", "tree"};
+  if(c >= 0 && c <= TREE)
+    return background[c];
+  if(is_object_class(c))
+    return objects[c - first_object_class];
+  return "unknown";
+}
+
+struct Urban_scene_options
+{
+  std::uint64_t seed = 1;
+  double street_length = 200.;      // m, scanner path length along x
+  std::size_t objects_per_100m = 30; // objects of the thesis' classes, both sides together
+  double tree_probability = 0.7;     // per tree slot (every 10-18 m on each side)
+  // Mobile scanner.
+  std::size_t target_points = 1000000; // mobile points wanted (roughly); 0: use the two below
+  double profile_spacing = 0.05;       // m of travel between scan lines (if target_points == 0)
+  double angular_step = 0.005;         // rad between rays of a line (if target_points == 0)
+  double isotropic_range = 10.;        // with target_points: angular_step = spacing / this
+  double scanner_height = 2.;          // m above the road
+  double max_range = 60.;              // m
+  double range_noise = 0.015;          // m, standard deviation of the Gaussian range error
+  // Airborne pass (added to the mobile points).
+  bool airborne = false;
+  double airborne_spacing = 0.5; // m, grid step
+  double airborne_height = 500.; // m
+  std::size_t number_of_threads = 0; // 0: TBB's choice
+};
+
+// One object of the ground truth. (x, y, z): location at ground level.
+struct Urban_object
+{
+  int id = 0; // 1, 2, ...
+  int object_class = 0;
+  double x = 0, y = 0, z = 0;
+  double height = 0;
+  CGAL::Bbox_3 bbox; // of its triangles
+};
+
+struct Urban_scene
+{
+  typedef CGAL::Epick K;
+  // Street geometry (m).
+  double road_half_width = 5.5; // two 3.5 m lanes plus parking strips
+  double facade_y = 10.;        // sidewalk from road_half_width to facade_y
+  double back_y = 24.;          // buildings from facade_y to back_y
+  double curb_height = 0.15;
+  double margin = 30.;          // ground and buildings extend this far beyond the path ends
+  double street_length = 200.;
+  std::vector<K::Triangle_3> triangles;
+  std::vector<int> triangle_instance; // object id, 0 for background
+  std::vector<int> triangle_class;
+  std::vector<Urban_object> objects;
+  std::vector<CGAL::Bbox_3> buildings;
+
+  // Smooth terrain (road level) and ground height including the curb step of the sidewalks.
+  static double terrain(double x, double y)
+  {
+    const double pi = 3.14159265358979323846;
+    return 0.02 * x + 0.25 * std::sin(2 * pi * x / 130.) + 0.004 * y +
+           0.08 * std::sin(2 * pi * y / 50. + x / 70.);
+  }
+  double ground_height(double x, double y) const
+  {
+    return terrain(x, y) + (std::abs(y) > road_half_width ? curb_height : 0.);
+  }
+};
+
+struct Urban_scan_point
+{
+  double x, y, z;
+  int instance;    // object id, 0 for background
+  int label;       // Object_class
+  float intensity; // in [0, 1]
+  bool airborne;
+};
+
+struct Urban_scan
+{
+  std::vector<Urban_scan_point> points; // mobile points by scan line, then airborne points
+  std::size_t mobile_points = 0;
+  std::size_t scan_lines = 0;
+  double profile_spacing = 0, angular_step = 0;
+};
+
+namespace urban_detail {
+
+typedef std::array<double, 3> V3;
+struct Box { double lo[3], hi[3]; };
+
+inline Box empty_box() { return Box{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}}; }
+inline void grow(Box& b, const V3& p)
+{
+  for(int i = 0; i < 3; ++i) {
+    b.lo[i] = (std::min)(b.lo[i], p[i]);
+    b.hi[i] = (std::max)(b.hi[i], p[i]);
+  }
+}
+inline bool overlap(const Box& a, const Box& b, double tol)
+{
+  for(int i = 0; i < 3; ++i)
+    if(a.hi[i] - tol <= b.lo[i] || b.hi[i] - tol <= a.lo[i])
+      return false;
+  return true;
+}
+
+inline V3 add(const V3& a, const V3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+inline V3 mul(const V3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+inline V3 cross(const V3& a, const V3& b)
+{
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline V3 unit(const V3& a)
+{
+  double l = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  return mul(a, 1. / l);
+}
+
+// A shape in its own frame (origin at ground level, local +y towards the road), as triangles and
+// one bounding box per primitive (used to keep objects from interpenetrating).
+struct Shape
+{
+  std::vector<std::array<V3, 3>> tris;
+  std::vector<Box> parts;
+  void tri(const V3& a, const V3& b, const V3& c) { tris.push_back({a, b, c}); }
+  void close_part(std::size_t first)
+  {
+    Box b = empty_box();
+    for(std::size_t i = first; i < tris.size(); ++i)
+      for(const V3& p : tris[i])
+        grow(b, p);
+    parts.push_back(b);
+  }
+  // Box centred at c with axes u, v, w (unit, orthogonal) and half sizes h.
+  void box(const V3& c, const V3& h, const V3& u = {1, 0, 0}, const V3& v = {0, 1, 0},
+           const V3& w = {0, 0, 1})
+  {
+    std::size_t first = tris.size();
+    V3 p[8];
+    for(int i = 0; i < 8; ++i)
+      p[i] = add(add(add(c, mul(u, (i & 1) ? h[0] : -h[0])), mul(v, (i & 2) ? h[1] : -h[1])),
+                 mul(w, (i & 4) ? h[2] : -h[2]));
+    static const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for(const auto& f : q) {
+      tri(p[f[0]], p[f[1]], p[f[2]]);
+      tri(p[f[0]], p[f[2]], p[f[3]]);
+    }
+    close_part(first);
+  }
+  void aabox(double x0, double y0, double z0, double x1, double y1, double z1)
+  {
+    box({(x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2}, {(x1 - x0) / 2, (y1 - y0) / 2, (z1 - z0) / 2});
+  }
+  // Capped cylinder from a to b.
+  void cylinder(const V3& a, const V3& b, double r, int n = 12)
+  {
+    std::size_t first = tris.size();
+    V3 axis = unit({b[0] - a[0], b[1] - a[1], b[2] - a[2]});
+    V3 e1 = unit(cross(axis, std::abs(axis[2]) < 0.9 ? V3{0, 0, 1} : V3{1, 0, 0}));
+    V3 e2 = cross(axis, e1);
+    const double pi = 3.14159265358979323846;
+    for(int i = 0; i < n; ++i) {
+      double t0 = 2 * pi * i / n, t1 = 2 * pi * (i + 1) / n;
+      V3 d0 = add(mul(e1, r * std::cos(t0)), mul(e2, r * std::sin(t0)));
+      V3 d1 = add(mul(e1, r * std::cos(t1)), mul(e2, r * std::sin(t1)));
+      V3 a0 = add(a, d0), a1 = add(a, d1), b0 = add(b, d0), b1 = add(b, d1);
+      tri(a0, a1, b1);
+      tri(a0, b1, b0);
+      tri(a, a1, a0);
+      tri(b, b0, b1);
+    }
+    close_part(first);
+  }
+  void post(double x, double y, double z0, double z1, double r, int n = 12)
+  {
+    cylinder({x, y, z0}, {x, y, z1}, r, n);
+  }
+  void ellipsoid(const V3& c, const V3& r, int nu = 14, int nv = 8)
+  {
+    std::size_t first = tris.size();
+    const double pi = 3.14159265358979323846;
+    auto at = [&](int i, int j) {
+      double phi = 2 * pi * i / nu, th = pi * j / nv;
+      return V3{c[0] + r[0] * std::sin(th) * std::cos(phi), c[1] + r[1] * std::sin(th) * std::sin(phi),
+                c[2] + r[2] * std::cos(th)};
+    };
+    for(int i = 0; i < nu; ++i)
+      for(int j = 0; j < nv; ++j) {
+        if(j > 0)
+          tri(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+        if(j + 1 < nv)
+          tri(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+      }
+    close_part(first);
+  }
+  Box bounds(double below_z = 1e300) const
+  {
+    Box b = empty_box();
+    for(const Box& p : parts)
+      if(p.lo[2] < below_z) {
+        grow(b, {p.lo[0], p.lo[1], p.lo[2]});
+        grow(b, {p.hi[0], p.hi[1], p.hi[2]});
+      }
+    return b;
+  }
+};
+
+typedef CGAL::Shape_analysis::internal::Random_stream Rng;
+
+// The object of class `c` in its own frame, with realistic dimensions and some variation.
+inline Shape make_object_shape(int c, Rng& rng)
+{
+  Shape s;
+  const double b = -0.05; // bases sink a little into the (sloped) ground
+  auto u = [&](double lo, double hi) { return rng.uniform(lo, hi); };
+  switch(c) {
+  case SHORT_POST: {
+    double h = u(0.8, 1.1), r = u(0.08, 0.13);
+    s.post(0, 0, b, h, r);
+    if(rng.uniform() < 0.5)
+      s.post(0, 0, h, h + 0.06, r * 1.25);
+    break;
+  }
+  case TALL_POST:
+    s.post(0, 0, b, u(2.2, 2.8), u(0.04, 0.07));
+    break;
+  case LAMP_POST: {
+    double h = u(5., 8.), arm = u(1.2, 2.2);
+    s.post(0, 0, b, h, u(0.09, 0.13));
+    s.cylinder({0, 0, h - 0.15}, {0, arm, h - 0.05}, 0.045, 8);
+    s.aabox(-0.18, arm - 0.05, h - 0.35, 0.18, arm + 0.55, h - 0.1);
+    break;
+  }
+  case LIGHT_STANDARD: {
+    double h = u(9., 11.), arm = u(2.5, 3.5);
+    s.post(0, 0, b, h, u(0.15, 0.2));
+    s.cylinder({0, 0, h - 0.2}, {0, arm, h}, 0.06, 8);
+    s.aabox(-0.25, arm - 0.1, h - 0.35, 0.25, arm + 0.8, h - 0.05);
+    break;
+  }
+  case SIGN: {
+    double h = u(2.1, 2.6), w = u(0.45, 0.9), t = u(0.45, 0.9);
+    s.post(0, 0, b, h, 0.035, 8);
+    if(rng.uniform() < 0.5)
+      s.aabox(-w / 2, 0.04, h - t, w / 2, 0.07, h + 0.05);
+    else
+      s.cylinder({0, 0.04, h - w / 2}, {0, 0.07, h - w / 2}, w / 2, 16);
+    break;
+  }
+  case TRAFFIC_LIGHT: {
+    double h = u(3., 4.2);
+    s.post(0, 0, b, h, u(0.08, 0.12));
+    s.aabox(-0.18, 0.1, h - 0.4, 0.18, 0.4, h + 0.65);
+    if(rng.uniform() < 0.4) {
+      double arm = u(3., 4.5);
+      s.cylinder({0, 0, h - 0.3}, {0, arm, h - 0.3}, 0.07, 8);
+      s.aabox(-0.18, arm - 0.3, h - 1.3, 0.18, arm, h - 0.35);
+    }
+    break;
+  }
+  case CAR: {
+    double l = u(4.1, 4.9), w = u(1.7, 1.9), hb = u(0.7, 0.9), hc = u(0.5, 0.65);
+    double wr = u(0.3, 0.35);
+    s.aabox(-l / 2, -w / 2, wr * 0.9, l / 2, w / 2, wr * 0.9 + hb);
+    double cl = l * u(0.5, 0.6), cx = u(-0.3, 0.1);
+    s.aabox(cx - cl / 2, -w / 2 + 0.08, wr * 0.9 + hb, cx + cl / 2, w / 2 - 0.08, wr * 0.9 + hb + hc);
+    for(int i = 0; i < 4; ++i) {
+      double x = (i & 1 ? 1 : -1) * (l / 2 - 0.8), y = (i & 2 ? 1 : -1) * (w / 2 - 0.12);
+      s.cylinder({x, y - 0.11, wr - 0.03}, {x, y + 0.11, wr - 0.03}, wr, 12);
+    }
+    break;
+  }
+  case FIRE_HYDRANT: {
+    double h = u(0.55, 0.75);
+    s.post(0, 0, b, h, 0.14, 12);
+    s.post(0, 0, h, h + 0.1, 0.09, 10);
+    s.cylinder({-0.24, 0, h * 0.65}, {0.24, 0, h * 0.65}, 0.05, 8);
+    s.cylinder({0, 0, h * 0.6}, {0, 0.22, h * 0.6}, 0.065, 8);
+    break;
+  }
+  case TRASH_CAN:
+    s.post(0, 0, b, u(0.85, 1.05), u(0.26, 0.33), 14);
+    break;
+  case NEWSPAPER_BOX: {
+    double w = u(0.42, 0.55), d = u(0.4, 0.5), h = u(0.95, 1.2);
+    s.aabox(-w / 2, -d / 2, 0.25, w / 2, d / 2, h);
+    s.aabox(-w / 2 + 0.03, -d / 2 + 0.03, b, w / 2 - 0.03, d / 2 - 0.03, 0.25);
+    break;
+  }
+  case PARKING_METER: {
+    double h = u(1.0, 1.2);
+    s.post(0, 0, b, h, 0.035, 8);
+    s.aabox(-0.11, -0.08, h, 0.11, 0.08, h + u(0.3, 0.4));
+    break;
+  }
+  case MAILING_BOX: {
+    double w = u(0.45, 0.55), d = u(0.45, 0.55), h = u(0.9, 1.05);
+    s.aabox(-w / 2, -d / 2, b, w / 2, d / 2, h);
+    s.cylinder({0, -d / 2, h}, {0, d / 2, h}, w / 2, 12);
+    break;
+  }
+  case RECYCLE_BIN: {
+    double w = u(0.6, 0.8), d = u(0.55, 0.7), h = u(0.95, 1.15);
+    s.aabox(-w / 2, -d / 2, b, w / 2, d / 2, h);
+    s.aabox(-w / 2 - 0.02, -d / 2 - 0.02, h, w / 2 + 0.02, d / 2 + 0.02, h + 0.06);
+    break;
+  }
+  case ADVERTISING_CYLINDER: {
+    double r = u(0.55, 0.65), h = u(2.7, 3.2);
+    s.post(0, 0, b, h, r, 20);
+    s.post(0, 0, h, h + 0.15, r + 0.1, 20);
+    break;
+  }
+  case TRAFFIC_CONTROL_BOX: {
+    double w = u(0.8, 1.2), d = u(0.4, 0.6), h = u(1.1, 1.5);
+    s.aabox(-w / 2, -d / 2, b, w / 2, d / 2, h);
+    break;
+  }
+  default: { // A-frame sign: two boards leaning on each other
+    double w = u(0.55, 0.7), h = u(0.8, 1.0), a = u(0.22, 0.3), t = 0.012;
+    double l = h / std::cos(a);
+    for(int k = -1; k <= 1; k += 2) {
+      V3 v = {0, std::cos(a), k * std::sin(a)}, ww = {0, -k * std::sin(a), std::cos(a)};
+      s.box({0, k * (h / 2) * std::tan(a), h / 2 - 0.02}, {w / 2, t, l / 2}, {1, 0, 0}, v, ww);
+    }
+    break;
+  }
+  }
+  return s;
+}
+
+inline Shape make_tree_shape(Rng& rng)
+{
+  Shape s;
+  double trunk = rng.uniform(2.5, 4.), rt = rng.uniform(0.12, 0.22);
+  double rc = rng.uniform(1.6, 2.4), rz = rng.uniform(1.8, 3.);
+  s.post(0, 0, -0.05, trunk + rz * 0.4, rt, 10);
+  s.ellipsoid({0, 0, trunk + rz}, {rc, rc * rng.uniform(0.85, 1.), rz});
+  return s;
+}
+
+// Scene under construction: appends placed shapes and checks collisions.
+struct Builder
+{
+  Urban_scene& scene;
+  std::vector<std::pair<Box, int>> parts; // world boxes of placed parts, with owner
+
+  // Places `s` at world (x, y, z) turned by `heading` about z. Returns false (and places nothing)
+  // if it would cut into an already placed shape.
+  bool place(const Shape& s, double x, double y, double z, double heading, int instance, int cls,
+             bool check = true)
+  {
+    double c = std::cos(heading), sn = std::sin(heading);
+    auto world = [&](const V3& p) { return V3{x + c * p[0] - sn * p[1], y + sn * p[0] + c * p[1], z + p[2]}; };
+    std::vector<Box> wb;
+    for(const Box& b : s.parts) {
+      Box w = empty_box();
+      for(int i = 0; i < 8; ++i)
+        grow(w, world({(i & 1) ? b.hi[0] : b.lo[0], (i & 2) ? b.hi[1] : b.lo[1], (i & 4) ? b.hi[2] : b.lo[2]}));
+      wb.push_back(w);
+    }
+    if(check)
+      for(const Box& w : wb)
+        for(const auto& p : parts)
+          if(overlap(w, p.first, 0.005))
+            return false;
+    for(const Box& w : wb)
+      parts.push_back({w, instance});
+    Box all = empty_box();
+    for(const auto& t : s.tris) {
+      V3 a = world(t[0]), b = world(t[1]), d = world(t[2]);
+      grow(all, a), grow(all, b), grow(all, d);
+      scene.triangles.emplace_back(Urban_scene::K::Point_3(a[0], a[1], a[2]),
+                                   Urban_scene::K::Point_3(b[0], b[1], b[2]),
+                                   Urban_scene::K::Point_3(d[0], d[1], d[2]));
+      scene.triangle_instance.push_back(instance);
+      scene.triangle_class.push_back(cls);
+    }
+    if(instance > 0) {
+      Urban_object o;
+      o.id = instance, o.object_class = cls, o.x = x, o.y = y, o.z = z;
+      o.height = all.hi[2] - z;
+      o.bbox = CGAL::Bbox_3(all.lo[0], all.lo[1], all.lo[2], all.hi[0], all.hi[1], all.hi[2]);
+      scene.objects.push_back(o);
+    }
+    return true;
+  }
+  void quad(const V3& a, const V3& b, const V3& c, const V3& d, int cls)
+  {
+    typedef Urban_scene::K::Point_3 P;
+    for(int k = 0; k < 2; ++k) {
+      const V3& q = k ? c : b;
+      const V3& r = k ? d : c;
+      scene.triangles.emplace_back(P(a[0], a[1], a[2]), P(q[0], q[1], q[2]), P(r[0], r[1], r[2]));
+      scene.triangle_instance.push_back(0);
+      scene.triangle_class.push_back(cls);
+    }
+  }
+};
+
+} // namespace urban_detail
+
+// Builds the street scene described by `o` (the scanner parameters are not used here).
+inline Urban_scene make_urban_scene(const Urban_scene_options& o)
+{
+  using namespace urban_detail;
+  if(!(o.street_length > 1. && o.street_length <= 1e5))
+    throw CGAL::Shape_analysis::Bad_input("Urban scene: street_length must be in (1, 1e5] m");
+  if(o.objects_per_100m > 200)
+    throw CGAL::Shape_analysis::Bad_input("Urban scene: objects_per_100m must be at most 200");
+  Urban_scene sc;
+  sc.street_length = o.street_length;
+  Builder bd{sc, {}};
+  const double L = o.street_length, R = sc.road_half_width, F = sc.facade_y, B = sc.back_y;
+  const double x0 = -sc.margin, x1 = L + sc.margin;
+
+  // Ground: road strip, curb faces, sidewalk strips (running under the buildings), ~1 m cells.
+  const int nx = int(std::ceil(x1 - x0));
+  auto ground_strip = [&](double ya, double yb, double dz) {
+    int ny = (std::max)(1, int(std::ceil(std::abs(yb - ya))));
+    for(int i = 0; i < nx; ++i)
+      for(int j = 0; j < ny; ++j) {
+        double xa = x0 + (x1 - x0) * i / nx, xb = x0 + (x1 - x0) * (i + 1) / nx;
+        double y0 = ya + (yb - ya) * j / ny, y1 = ya + (yb - ya) * (j + 1) / ny;
+        auto p = [&](double x, double y) { return V3{x, y, Urban_scene::terrain(x, y) + dz}; };
+        bd.quad(p(xa, y0), p(xb, y0), p(xb, y1), p(xa, y1), GROUND);
+      }
+  };
+  ground_strip(-R, R, 0.);
+  ground_strip(R, B, sc.curb_height);
+  ground_strip(-B, -R, sc.curb_height);
+  for(int s = -1; s <= 1; s += 2)
+    for(int i = 0; i < nx; ++i) {
+      double xa = x0 + (x1 - x0) * i / nx, xb = x0 + (x1 - x0) * (i + 1) / nx, y = s * R;
+      double za = Urban_scene::terrain(xa, y), zb = Urban_scene::terrain(xb, y);
+      bd.quad({xa, y, za}, {xb, y, zb}, {xb, y, zb + sc.curb_height}, {xa, y, za + sc.curb_height}, GROUND);
+    }
+
+  // Buildings: boxes from the facade to the back line, 8-30 m wide, 6-25 m high, some gaps.
+  Rng brng(o.seed, (std::uint64_t(1) << 40) + 1);
+  for(int s = -1; s <= 1; s += 2) {
+    double x = x0;
+    while(x < x1) {
+      double w = brng.uniform(8., 30.), h = brng.uniform(6., 25.);
+      double xe = (std::min)(x + w, x1);
+      double zmin = 1e300;
+      for(double xx : {x, xe})
+        for(double yy : {F, B})
+          zmin = (std::min)(zmin, sc.ground_height(xx, s * yy));
+      double zmax = sc.ground_height((x + xe) / 2, s * F) + h;
+      Shape box;
+      box.aabox(x, (std::min)(s * F, s * B), zmin - 0.5, xe, (std::max)(s * F, s * B), zmax);
+      bd.place(box, 0, 0, 0, 0, 0, BUILDING, false);
+      const Box& b = box.parts.back();
+      sc.buildings.emplace_back(b.lo[0], b.lo[1], b.lo[2], b.hi[0], b.hi[1], b.hi[2]);
+      x = xe + (brng.uniform() < 0.35 ? brng.uniform(0.8, 4.) : 0.);
+    }
+  }
+
+  // Objects: classes drawn from bags (each bag holds every class, common ones several times),
+  // placed at random along the street with some clutter groups.
+  static const int bag_counts[number_of_object_classes] = {3, 2, 3, 1, 3, 1, 5, 1, 2, 2, 2, 1, 1, 1, 1, 1};
+  std::vector<int> bag;
+  Rng orng(o.seed, (std::uint64_t(1) << 40) + 2);
+  auto next_class = [&]() {
+    if(bag.empty()) {
+      for(int c = 0; c < number_of_object_classes; ++c)
+        for(int k = 0; k < bag_counts[c]; ++k)
+          bag.push_back(first_object_class + c);
+      for(std::size_t i = bag.size(); i > 1; --i)
+        std::swap(bag[i - 1], bag[orng.index(i)]);
+    }
+    int c = bag.back();
+    bag.pop_back();
+    return c;
+  };
+  const std::size_t wanted = std::size_t(std::llround(double(o.objects_per_100m) * L / 100.));
+  int next_id = 1;
+  const double pi = 3.14159265358979323846;
+  // A group: shapes placed side by side along local x (touching) at one distance from the curb.
+  struct Member { Shape shape; int cls; double dx; };
+  auto place_group = [&](std::vector<Member>& g, double x, int side, bool at_wall, double off) {
+    double heading = side > 0 ? pi : 0.;
+    Box front = empty_box();
+    for(const Member& m : g) {
+      Box b = m.shape.bounds(2.5);
+      grow(front, {b.lo[0], b.lo[1], b.lo[2]});
+      grow(front, {b.hi[0], b.hi[1], b.hi[2]});
+    }
+    if(at_wall)
+      off = F - 0.01 - R + front.lo[1];
+    else
+      off = (std::max)(off, front.hi[1] + 0.08);
+    double y = side * (R + off);
+    std::size_t n_parts = bd.parts.size(), n_tris = sc.triangles.size(), n_obj = sc.objects.size();
+    for(const Member& m : g) {
+      double xx = x + std::cos(heading) * m.dx, yy = y + std::sin(heading) * m.dx;
+      if(!bd.place(m.shape, xx, yy, sc.ground_height(xx, yy), heading, next_id, m.cls)) {
+        bd.parts.resize(n_parts); // undo the group
+        sc.triangles.resize(n_tris), sc.triangle_instance.resize(n_tris), sc.triangle_class.resize(n_tris);
+        sc.objects.resize(n_obj);
+        next_id -= int(&m - &g[0]);
+        return false;
+      }
+      ++next_id;
+    }
+    return true;
+  };
+  for(std::size_t attempt = 0; sc.objects.size() < wanted && attempt < 20 * wanted + 20;) {
+    int c = next_class();
+    for(int tries = 0; tries < 20; ++tries, ++attempt) {
+      double x = orng.uniform(1., L - 1.);
+      int side = orng.uniform() < 0.5 ? -1 : 1;
+      std::vector<Member> g;
+      g.push_back({make_object_shape(c, orng), c, 0.});
+      bool ok;
+      if(c == CAR) {
+        double heading = (orng.uniform() < 0.5 ? 0. : pi) + orng.uniform(-0.03, 0.03);
+        double y = side * (R - 0.3 - g[0].shape.bounds().hi[1]);
+        ok = bd.place(g[0].shape, x, y, Urban_scene::terrain(x, y), heading, next_id, CAR);
+        if(ok)
+          ++next_id;
+      } else {
+        bool at_wall = false;
+        double off = orng.uniform(0.3, 0.9);
+        double r = orng.uniform();
+        auto gap = [&](const Shape& a, const Shape& b) {
+          return a.bounds(2.5).hi[0] - b.bounds(2.5).lo[0] + orng.uniform(0.003, 0.02);
+        };
+        if(c == NEWSPAPER_BOX && r < 0.7) { // a row against a wall
+          at_wall = true;
+          int n = 2 + int(orng.index(3));
+          for(int k = 1; k < n; ++k) {
+            int ck = orng.uniform() < 0.2 ? MAILING_BOX : NEWSPAPER_BOX;
+            Shape sh = make_object_shape(ck, orng);
+            double dx = g.back().dx + gap(g.back().shape, sh);
+            g.push_back({sh, ck, dx});
+          }
+        } else if(c == TRASH_CAN && r < 0.5) { // against a lamp post
+          Shape lamp = make_object_shape(LAMP_POST, orng);
+          double dx = gap(lamp, g[0].shape);
+          g.insert(g.begin(), Member{lamp, LAMP_POST, 0.});
+          g[1].dx = dx;
+        } else if((c == MAILING_BOX || c == RECYCLE_BIN || c == TRAFFIC_CONTROL_BOX ||
+                   c == A_FRAME_SIGN || c == ADVERTISING_CYLINDER || c == TRASH_CAN) && r < 0.5)
+          at_wall = true;
+        else if(c == PARKING_METER || c == FIRE_HYDRANT || c == SHORT_POST)
+          off = orng.uniform(0.25, 0.6);
+        ok = place_group(g, x, side, at_wall, off);
+      }
+      if(ok) {
+        ++attempt;
+        break;
+      }
+    }
+  }
+
+  // Trees along the curbs where there is room.
+  Rng trng(o.seed, (std::uint64_t(1) << 40) + 3);
+  for(int s = -1; s <= 1; s += 2)
+    for(double x = trng.uniform(2., 12.); x < L; x += trng.uniform(10., 18.)) {
+      Shape t = make_tree_shape(trng);
+      if(trng.uniform() >= o.tree_probability)
+        continue;
+      double y = s * (R + 1.5 + trng.uniform(-0.2, 0.2));
+      bd.place(t, x, y, sc.ground_height(x, y), 0., 0, TREE);
+    }
+  return sc;
+}
+
+namespace urban_detail {
+
+typedef Urban_scene::K K;
+typedef std::vector<K::Triangle_3>::const_iterator Tri_iterator;
+typedef CGAL::AABB_triangle_primitive<K, Tri_iterator> Primitive;
+typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
+
+inline double gaussian(Rng& r)
+{
+  double u1 = 1. - r.uniform(), u2 = r.uniform();
+  return std::sqrt(-2. * std::log(u1)) * std::cos(6.283185307179586 * u2);
+}
+
+inline float reflectivity(int c)
+{
+  switch(c) {
+  case GROUND: return 0.25f;
+  case BUILDING: return 0.45f;
+  case TREE: return 0.35f;
+  case SIGN: return 0.95f;
+  case CAR: return 0.6f;
+  default: return 0.5f;
+  }
+}
+
+// Casts one ray; appends the noisy hit (if any, within max_range) to `out`.
+inline void cast(const Tree& tree, const Urban_scene& sc, const K::Point_3& o, const K::Vector_3& d,
+                 double max_range, double sigma, bool airborne, Rng& rng, std::vector<Urban_scan_point>& out)
+{
+  auto hit = tree.first_intersection(K::Ray_3(o, d));
+  double noise = gaussian(rng); // drawn for every ray: the stream does not depend on hits
+  if(!hit)
+    return;
+  const K::Point_3* p = boost::get<K::Point_3>(&hit->first);
+  K::Point_3 q;
+  if(p)
+    q = *p;
+  else { // ray in the plane of the triangle: nearer end of the overlap
+    const K::Segment_3& s = boost::get<K::Segment_3>(hit->first);
+    q = CGAL::squared_distance(o, s.source()) < CGAL::squared_distance(o, s.target()) ? s.source() : s.target();
+  }
+  double t = std::sqrt(CGAL::squared_distance(o, q));
+  if(t > max_range)
+    return;
+  std::size_t f = std::size_t(hit->second - sc.triangles.begin());
+  const K::Triangle_3& tr = sc.triangles[f];
+  K::Vector_3 n = CGAL::cross_product(tr[1] - tr[0], tr[2] - tr[0]);
+  double cosi = std::abs(n * d) / std::sqrt(n.squared_length() * d.squared_length());
+  double dl = std::sqrt(d.squared_length());
+  double s = (t + sigma * noise) / dl;
+  Urban_scan_point sp;
+  sp.x = o.x() + d.x() * s, sp.y = o.y() + d.y() * s, sp.z = o.z() + d.z() * s;
+  sp.instance = sc.triangle_instance[f];
+  sp.label = sc.triangle_class[f];
+  double I = reflectivity(sp.label) * (0.3 + 0.7 * cosi) / (1. + (airborne ? 0. : t / 40.));
+  sp.intensity = float((std::min)(1., (std::max)(0., I + 0.02 * gaussian(rng))));
+  sp.airborne = airborne;
+  out.push_back(sp);
+}
+
+} // namespace urban_detail
+
+// Scans `sc` with the mobile scanner (and the airborne pass if asked) described by `o`.
+inline Urban_scan scan_urban_scene(const Urban_scene& sc, const Urban_scene_options& o)
+{
+  using namespace urban_detail;
+  if(!(o.range_noise >= 0. && o.range_noise < 1.) || !(o.max_range > 0. && o.max_range < 1e4) ||
+     !(o.isotropic_range > 0.) || !std::isfinite(o.scanner_height) || o.target_points > 1000000000 ||
+     (o.airborne && !(o.airborne_spacing >= 0.01 && o.airborne_height > 0. && o.airborne_height < 1e5)))
+    throw CGAL::Shape_analysis::Bad_input("Urban scene: scanner parameter out of range (range_noise "
+                                          "in [0, 1), max_range in (0, 1e4), target_points <= 1e9, "
+                                          "airborne_spacing >= 0.01)");
+  Tree tree(sc.triangles.begin(), sc.triangles.end());
+  tree.build();
+  const double L = sc.street_length, pi = 3.14159265358979323846;
+  const double tilt = pi / 6.;
+  typedef std::vector<Urban_scan_point> Line;
+
+  // Scan line i: scanner (i even: +tilt, odd: -tilt) at x = (i + 0.5) * dx.
+  auto scan_line = [&](std::size_t i, double dx, double dth, double sigma, Rng rng, Line& out) {
+    double x = (double(i) + 0.5) * dx;
+    K::Point_3 org(x, 0., Urban_scene::terrain(x, 0.) + o.scanner_height);
+    double a = (i % 2 == 0) ? tilt : -tilt, ca = std::cos(a), sa = std::sin(a);
+    std::size_t m = std::size_t(std::ceil(2 * pi / dth));
+    double phase = rng.uniform();
+    for(std::size_t j = 0; j < m; ++j) {
+      double th = (double(j) + phase) * (2 * pi / double(m));
+      K::Vector_3 d(-sa * std::cos(th), ca * std::cos(th), std::sin(th));
+      cast(tree, sc, org, d, o.max_range, sigma, false, rng, out);
+    }
+  };
+
+  double dx = o.profile_spacing, dth = o.angular_step;
+  if(o.target_points > 0) {
+    // Pilot: a few noiseless lines at a first guess (half the rays hit), then the spacing for
+    // which the hits per length meet the target (rays per line ~ 1/dth, dth = dx / rho).
+    const double rho = o.isotropic_range;
+    double dx0 = std::sqrt(0.5 * 2 * pi * rho * L / double(o.target_points));
+    double dth0 = dx0 / rho;
+    std::size_t lines0 = std::size_t(L / dx0), pilot = (std::min<std::size_t>)(lines0, 64);
+    Line tmp;
+    std::size_t hits = 0;
+    for(std::size_t k = 0; k < pilot; ++k) {
+      tmp.clear();
+      std::size_t i = (k * lines0) / pilot;
+      scan_line(i, dx0, dth0, 0., Rng(o.seed, i), tmp);
+      hits += tmp.size();
+    }
+    double per_line = double(hits) / double((std::max<std::size_t>)(pilot, 1));
+    dx = std::sqrt(L * per_line * dth0 * rho / double(o.target_points));
+    dth = dx / rho;
+  }
+  if(!(dx >= 1e-4 && dth >= 1e-5 && dth < 1.))
+    throw CGAL::Shape_analysis::Bad_input("Urban scene: profile_spacing must be >= 1e-4 m and "
+                                          "angular_step in [1e-5, 1) rad");
+  const std::size_t lines = std::size_t(L / dx);
+  std::size_t n_air = 0, ax = 0, ay = 0;
+  if(o.airborne) {
+    ax = std::size_t(L / o.airborne_spacing) + 1;
+    ay = std::size_t(2 * sc.back_y / o.airborne_spacing) + 1;
+    n_air = ax;
+  }
+  std::vector<Line> out(lines + n_air);
+  CGAL::Shape_analysis::internal::Parallel_workspaces<char> parallel(o.number_of_threads);
+  parallel.for_each(0, lines + n_air, [&](std::size_t i, char&) {
+    Rng rng(o.seed, i);
+    if(i < lines)
+      scan_line(i, dx, dth, o.range_noise, rng, out[i]);
+    else { // airborne row: one x, all y
+      double x = double(i - lines) * o.airborne_spacing;
+      for(std::size_t j = 0; j < ay; ++j) {
+        double y = -sc.back_y + double(j) * o.airborne_spacing;
+        cast(tree, sc, K::Point_3(x, y, o.airborne_height), K::Vector_3(0, 0, -1), 1e300,
+             o.range_noise, true, rng, out[i]);
+      }
+    }
+  });
+  Urban_scan scan;
+  scan.scan_lines = lines, scan.profile_spacing = dx, scan.angular_step = dth;
+  std::size_t total = 0;
+  for(std::size_t i = 0; i < out.size(); ++i) {
+    total += out[i].size();
+    if(i + 1 == lines)
+      scan.mobile_points = total;
+  }
+  scan.points.reserve(total);
+  for(Line& l : out) {
+    scan.points.insert(scan.points.end(), l.begin(), l.end());
+    Line().swap(l);
+  }
+  return scan;
+}
+
+// Copies the scan into `ps` (cleared first) with int properties "instance" and "label" and,
+// if asked, a float property "intensity".
+template <typename Point>
+void fill_point_set(const Urban_scan& scan, CGAL::Point_set_3<Point>& ps, bool with_intensity = true)
+{
+  ps.clear();
+  ps.reserve(scan.points.size());
+  auto inst = ps.template add_property_map<int>("instance", 0).first;
+  auto label = ps.template add_property_map<int>("label", 0).first;
+  typename CGAL::Point_set_3<Point>::template Property_map<float> inten;
+  if(with_intensity)
+    inten = ps.template add_property_map<float>("intensity", 0.f).first;
+  for(const Urban_scan_point& p : scan.points) {
+    auto it = ps.insert(Point(p.x, p.y, p.z));
+    inst[*it] = p.instance;
+    label[*it] = p.label;
+    if(with_intensity)
+      inten[*it] = p.intensity;
+  }
+}
+
+// The ground-truth objects, one a line: id, class id, x, y, z, height, class name.
+inline void write_ground_truth(std::ostream& os, const std::vector<Urban_object>& objects)
+{
+  os << "# id class x y z height name\n";
+  for(const Urban_object& b : objects)
+    os << b.id << ' ' << b.object_class << ' ' << b.x << ' ' << b.y << ' ' << b.z << ' ' << b.height
+       << ' ' << object_class_name(b.object_class) << '\n';
+}
+
+} // namespace internal
+} // namespace Point_set_object_recognition
+} // namespace CGAL
+
+#endif // CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_URBAN_SCENE_H

@@ -1,0 +1,171 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+// shape_analysis points scene --points N --seed S --output scene.ply --objects objects.json
+//
+// The project's ground truth for point-cloud object recognition: a procedural street (road,
+// curbs, sloped ground, buildings, trees, objects of the thesis' classes in clutter) scanned by a
+// simulated mobile LIDAR, optionally with an airborne pass.
+
+#include "cli_common.h"
+
+#include <CGAL/Point_set_3.h>
+#include <CGAL/Point_set_3/IO/PLY.h>
+#include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
+
+#include <iostream>
+#include <memory>
+
+namespace shape_analysis_cli {
+
+namespace {
+
+namespace PSI = CGAL::Point_set_object_recognition::internal;
+
+struct Scene_options
+{
+  std::string output, objects, report;
+  double length = 200;
+  std::size_t points = 1000000;
+  std::size_t objects_per_100m = 30;
+  double noise = 0.015;
+  bool airborne = false;
+  std::uint64_t seed = 1;
+  std::size_t threads = 0;
+  bool quiet = false, verbose = false;
+};
+
+Json objects_json(const std::vector<PSI::Urban_object>& objects)
+{
+  Json list = Json::array();
+  for(const PSI::Urban_object& b : objects) {
+    Json o = Json::object();
+    o["id"] = b.id;
+    o["class"] = PSI::object_class_name(b.object_class);
+    o["class_id"] = b.object_class;
+    o["location"] = Json(std::vector<double>{b.x, b.y, b.z});
+    o["height"] = b.height;
+    o["bbox"] = Json(std::vector<double>{b.bbox.xmin(), b.bbox.ymin(), b.bbox.zmin(), b.bbox.xmax(),
+                                         b.bbox.ymax(), b.bbox.zmax()});
+    list.push_back(o);
+  }
+  return list;
+}
+
+int run_scene(const Scene_options& o)
+{
+  Stopwatch total;
+  Progress progress("points scene", o.quiet, o.verbose);
+  Output_files outputs;
+  require_extension(o.output, ".ply", "scanned scene");
+  outputs.add_output(o.output, "scanned scene");
+  if(!o.objects.empty()) {
+    require_extension(o.objects, ".json", "ground-truth objects");
+    outputs.add_output(o.objects, "ground-truth objects");
+  }
+  outputs.add_optional_output(o.report, "report");
+  if(!(o.length >= 10 && o.length <= 1e5))
+    throw Usage_error("--length must be between 10 and 100000 m");
+  if(o.points < 1000)
+    throw Usage_error("--points must be at least 1000");
+  if(!(o.noise >= 0 && o.noise <= 1))
+    throw Usage_error("--noise must be between 0 and 1 m");
+
+  PSI::Urban_scene_options so;
+  so.seed = o.seed;
+  so.street_length = o.length;
+  so.objects_per_100m = o.objects_per_100m;
+  so.target_points = o.points;
+  so.range_noise = o.noise;
+  so.airborne = o.airborne;
+  so.number_of_threads = o.threads;
+
+  Stopwatch work;
+  progress.stage("building a street of " + std::to_string(int(o.length)) + " m");
+  const PSI::Urban_scene scene = PSI::make_urban_scene(so);
+  progress.stage("scanning " + std::to_string(scene.objects.size()) + " objects, " +
+                 std::to_string(scene.triangles.size()) + " triangles");
+  const PSI::Urban_scan scan = PSI::scan_urban_scene(scene, so);
+  const double seconds = work.seconds();
+
+  progress.stage("writing " + std::to_string(scan.points.size()) + " points");
+  outputs.stage(o.output, true, [&](std::ostream& out) {
+    CGAL::Point_set_3<Point_3> ps;
+    PSI::fill_point_set(scan, ps, true);
+    // Colours by class, so that MeshLab shows them; CloudCompare also shows the scalar fields.
+    auto red = ps.add_property_map<unsigned char>("red", 0).first;
+    auto green = ps.add_property_map<unsigned char>("green", 0).first;
+    auto blue = ps.add_property_map<unsigned char>("blue", 0).first;
+    auto label = ps.property_map<int>("label").first;
+    for(auto i : ps) {
+      const auto c = label_colour(std::size_t(label[i]));
+      red[i] = c[0];
+      green[i] = c[1];
+      blue[i] = c[2];
+    }
+    CGAL::IO::set_mode(out, CGAL::IO::BINARY);
+    if(!CGAL::IO::write_PLY(out, ps, "written by shape_analysis points scene (CGAL Global Shape Analysis)"))
+      throw Cli_error("cannot write " + o.output);
+  });
+  std::size_t object_points = 0;
+  for(const PSI::Urban_scan_point& p : scan.points)
+    object_points += p.instance > 0 ? 1 : 0;
+  if(!o.objects.empty())
+    outputs.stage(o.objects, false, [&](std::ostream& out) { out << objects_json(scene.objects).dump() << "\n"; });
+  if(!o.report.empty()) {
+    Json report = Json::object();
+    report["command"] = "points scene";
+    Json parameters = Json::object();
+    parameters["length"] = o.length;
+    parameters["points"] = o.points;
+    parameters["objects_per_100m"] = o.objects_per_100m;
+    parameters["noise"] = o.noise;
+    parameters["airborne"] = o.airborne;
+    parameters["seed"] = o.seed;
+    report["parameters"] = parameters;
+    report["number_of_points"] = scan.points.size();
+    report["mobile_points"] = scan.mobile_points;
+    report["object_points"] = object_points;
+    report["scan_lines"] = scan.scan_lines;
+    report["profile_spacing"] = scan.profile_spacing;
+    report["number_of_objects"] = scene.objects.size();
+    report["number_of_triangles"] = scene.triangles.size();
+    stage_report(outputs, o.report, report, seconds, 0.0, total.seconds(),
+                 {{"scene", o.output}, {"objects", o.objects}});
+  }
+  outputs.commit();
+  progress.done();
+  std::cout << o.output << ": " << scan.points.size() << " points (" << object_points << " on "
+            << scene.objects.size() << " objects) in " << seconds << " s\n";
+  return 0;
+}
+
+} // namespace
+
+void add_points_command(CLI::App& app, std::function<int()>& run)
+{
+  CLI::App* points = app.add_subcommand("points", "Point clouds: scanned urban scenes.");
+  points->require_subcommand(1);
+
+  auto s = std::make_shared<Scene_options>();
+  CLI::App* scene = points->add_subcommand(
+    "scene", "Generate a street (road, curbs, sloped ground, buildings, trees and small objects of 16 "
+             "classes in clutter) scanned by a simulated mobile LIDAR; per point its object id and class.");
+  scene->add_option("-o,--output", s->output,
+                    "The scan (.ply: x y z double, instance and label int, intensity float, colours by class)")
+    ->required();
+  scene->add_option("--objects", s->objects, "The ground-truth objects (.json: id, class, location, height, bbox)");
+  scene->add_option("--report", s->report, "JSON report (parameters, counts, seconds)");
+  scene->add_option("--length", s->length, "Length of the street in metres")->capture_default_str();
+  scene->add_option("--points", s->points, "Number of mobile LIDAR points wanted (roughly)")->capture_default_str();
+  scene->add_option("--objects-per-100m", s->objects_per_100m, "Objects per 100 m of street")->capture_default_str();
+  scene->add_option("--noise", s->noise, "Standard deviation of the range noise in metres")->capture_default_str();
+  scene->add_flag("--airborne", s->airborne, "Add an airborne pass (points on a 0.5 m grid from above)");
+  scene->add_option("--seed", s->seed, "Random seed (same seed, same scene)")->capture_default_str();
+  scene->add_option("--threads", s->threads, "Largest number of threads (0: all cores)")->capture_default_str();
+  scene->add_flag("-q,--quiet", s->quiet, "No progress on stderr");
+  scene->add_flag("-v,--verbose", s->verbose, "Progress on stderr even when it is not a terminal");
+  scene->callback([s, &run]() { run = [s]() { return run_scene(*s); }; });
+}
+
+} // namespace shape_analysis_cli
