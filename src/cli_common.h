@@ -205,7 +205,7 @@ void add_register_command(CLI::App& app, std::function<int()>& run);
 void add_partition_commands(CLI::App& app, std::function<int()>& run); // partition, partition-segment
 void add_coseg_command(CLI::App& app, std::function<int()>& run);
 void add_symmetry_command(CLI::App& app, std::function<int()>& run); // symmetry detect|symmetrize|enhance|transfer
-void add_points_command(CLI::App& app, std::function<int()>& run);   // points scene
+void add_points_command(CLI::App& app, std::function<int()>& run);   // points scene|background
 
 } // namespace shape_analysis_cli
 

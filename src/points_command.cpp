@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
 // shape_analysis points scene --points N --seed S --output scene.ply --objects objects.json
+// shape_analysis points background IN (.ply, .xyz, .las, .bin) --output OUT.ply --report R.json
 //
 // The project's ground truth for point-cloud object recognition: a procedural street (road,
 // curbs, sloped ground, buildings, trees, objects of the thesis' classes in clutter) scanned by a
@@ -12,15 +13,20 @@
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO/PLY.h>
 #include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
+#include <CGAL/Point_set_object_recognition/read_point_set.h>
+#include <CGAL/Point_set_object_recognition/remove_background.h>
 
+#include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 namespace shape_analysis_cli {
 
 namespace {
 
 namespace PSI = CGAL::Point_set_object_recognition::internal;
+namespace PSOR = CGAL::Point_set_object_recognition;
 
 struct Scene_options
 {
@@ -140,11 +146,108 @@ int run_scene(const Scene_options& o)
   return 0;
 }
 
+struct Background_options
+{
+  std::string input, output, report;
+  double cell = 5, threshold = 0.2, isolation = 0.5, spacing = 0.5, extent = 12;
+  std::size_t neighbors = 3;
+  bool all = false;
+  bool quiet = false, verbose = false;
+};
+
+int run_background(const Background_options& o)
+{
+  Stopwatch total;
+  Progress progress("points background", o.quiet, o.verbose);
+  Output_files outputs;
+  outputs.add_input(o.input);
+  require_extension(o.output, ".ply", "output point cloud");
+  outputs.add_output(o.output, "output point cloud");
+  outputs.add_optional_output(o.report, "report");
+
+  progress.stage("reading " + o.input);
+  Stopwatch reading;
+  CGAL::Point_set_3<Point_3> points;
+  const PSOR::Point_set_read_result read = PSOR::read_point_set(o.input, points);
+  const double read_seconds = reading.seconds();
+
+  progress.stage("removing the background of " + std::to_string(points.size()) + " points");
+  Stopwatch work;
+  const PSOR::Background_removal_result r = PSOR::remove_background(
+    points, PSOR::parameters::ground_cell_size(o.cell)
+              .ground_threshold(o.threshold)
+              .isolation_radius(o.isolation)
+              .minimum_neighbors(o.neighbors)
+              .component_spacing(o.spacing)
+              .maximum_component_extent(o.extent));
+  const double seconds = work.seconds();
+
+  outputs.stage(o.output, true, [&](std::ostream& out) {
+    // The input's points and properties (in the local frame), with the kind and the height above
+    // the ground; only the foreground unless --all.
+    CGAL::Point_set_3<Point_3> result = points;
+    auto kind = result.add_property_map<int>("kind", 0).first;
+    auto height = result.add_property_map<float>("height_above_ground", 0.f).first;
+    std::size_t k = 0;
+    for(auto i : result) {
+      kind[i] = int(r.kind[k]);
+      height[i] = float(r.height_above_ground[k]);
+      ++k;
+    }
+    if(!o.all) {
+      k = 0;
+      std::vector<CGAL::Point_set_3<Point_3>::Index> removed;
+      for(auto i : result) {
+        if(r.kind[k] != PSOR::Point_kind::FOREGROUND)
+          removed.push_back(i);
+        ++k;
+      }
+      for(auto it = removed.rbegin(); it != removed.rend(); ++it)
+        result.remove(*it);
+      result.collect_garbage();
+    }
+    CGAL::IO::set_mode(out, CGAL::IO::BINARY);
+    std::ostringstream comment;
+    comment << std::setprecision(17) << "written by shape_analysis points background (CGAL Global Shape Analysis); "
+            << "local origin " << read.offset[0] << " " << read.offset[1] << " " << read.offset[2]
+            << " (add it back for the input's coordinates)";
+    if(!CGAL::IO::write_PLY(out, result, comment.str()))
+      throw Cli_error("cannot write " + o.output);
+  });
+  if(!o.report.empty()) {
+    Json report = Json::object();
+    report["command"] = "points background";
+    report["input"] = o.input;
+    report["format"] = read.format;
+    report["number_of_points"] = points.size();
+    report["local_origin"] = Json(std::vector<double>{read.offset[0], read.offset[1], read.offset[2]});
+    Json parameters = Json::object();
+    parameters["ground_cell_size"] = o.cell;
+    parameters["ground_threshold"] = o.threshold;
+    parameters["isolation_radius"] = o.isolation;
+    parameters["minimum_neighbors"] = o.neighbors;
+    parameters["component_spacing"] = o.spacing;
+    parameters["maximum_component_extent"] = o.extent;
+    report["parameters"] = parameters;
+    report["ground_points"] = r.number_of_ground_points;
+    report["isolated_points"] = r.number_of_isolated_points;
+    report["large_component_points"] = r.number_of_large_component_points;
+    report["foreground_points"] = r.foreground.size();
+    stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(), {{"points", o.output}});
+  }
+  outputs.commit();
+  progress.done();
+  std::cout << o.input << ": " << points.size() << " points, " << r.number_of_ground_points << " ground, "
+            << r.number_of_isolated_points << " isolated, " << r.number_of_large_component_points
+            << " in large components, " << r.foreground.size() << " kept (" << seconds << " s)\n";
+  return 0;
+}
+
 } // namespace
 
 void add_points_command(CLI::App& app, std::function<int()>& run)
 {
-  CLI::App* points = app.add_subcommand("points", "Point clouds: scanned urban scenes.");
+  CLI::App* points = app.add_subcommand("points", "Point clouds: scanned urban scenes, background removal.");
   points->require_subcommand(1);
 
   auto s = std::make_shared<Scene_options>();
@@ -166,6 +269,32 @@ void add_points_command(CLI::App& app, std::function<int()>& run)
   scene->add_flag("-q,--quiet", s->quiet, "No progress on stderr");
   scene->add_flag("-v,--verbose", s->verbose, "Progress on stderr even when it is not a terminal");
   scene->callback([s, &run]() { run = [s]() { return run_scene(*s); }; });
+
+  auto b = std::make_shared<Background_options>();
+  CLI::App* background = points->add_subcommand(
+    "background", "Remove the ground, isolated points and very large connected components (buildings) "
+                  "of a scan (metres, z up); keep the candidate small objects.");
+  background->add_option("input", b->input, "The scan (.ply, .xyz/.pts/.txt, .las 1.2-1.4 uncompressed, .bin KITTI)")
+    ->required();
+  background->add_option("-o,--output", b->output,
+                         "The points kept (.ply, in the local frame of the report's local_origin), with "
+                         "'kind' and 'height_above_ground'")
+    ->required();
+  background->add_option("--report", b->report, "JSON report (counts, local origin, seconds)");
+  background->add_flag("--all", b->all, "Write every point with its kind (0 kept, 1 ground, 2 isolated, 3 large component)");
+  background->add_option("--cell", b->cell, "Side of the ground grid's cells (m)")->capture_default_str();
+  background->add_option("--ground-threshold", b->threshold, "Points less than this above the ground are ground (m)")
+    ->capture_default_str();
+  background->add_option("--isolation-radius", b->isolation, "Side of the voxels where neighbours are counted (m)")
+    ->capture_default_str();
+  background->add_option("--min-neighbors", b->neighbors, "Fewer neighbours: isolated")->capture_default_str();
+  background->add_option("--spacing", b->spacing, "Side of the voxels of the connected components (m)")
+    ->capture_default_str();
+  background->add_option("--max-extent", b->extent, "Components with a wider horizontal extent are removed (m)")
+    ->capture_default_str();
+  background->add_flag("-q,--quiet", b->quiet, "No progress on stderr");
+  background->add_flag("-v,--verbose", b->verbose, "Progress on stderr even when it is not a terminal");
+  background->callback([b, &run]() { run = [b]() { return run_background(*b); }; });
 }
 
 } // namespace shape_analysis_cli

@@ -362,16 +362,3 @@ TEST(UrbanScene, BadOptions)
   EXPECT_GT(scan.points.size(), 300u * 100u);
 }
 
-// Timing of larger scans: run with --gtest_also_run_disabled_tests.
-TEST(UrbanScene, DISABLED_Timing)
-{
-  for(std::size_t n : {std::size_t(100000), std::size_t(1000000), std::size_t(10000000)}) {
-    PSOR::Urban_scene_options o = base_options(n);
-    o.street_length = 200.;
-    auto t0 = std::chrono::steady_clock::now();
-    Scanned r = run(o);
-    double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::cout << n << " target: " << r.scan.points.size() << " points, " << r.scene.triangles.size()
-              << " triangles, " << r.scene.objects.size() << " objects, " << sec << " s\n";
-  }
-}

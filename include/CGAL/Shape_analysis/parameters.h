@@ -66,7 +66,15 @@ namespace internal_np {
   X(final_symmetry_weight_t, final_symmetry_weight_tag, final_symmetry_weight)       \
   X(transfer_mode_t, transfer_mode_tag, transfer_mode)                               \
   X(source_side_t, source_side_tag, source_side)                                     \
-  X(symmetric_map_t, symmetric_map_tag, symmetric_map)
+  X(symmetric_map_t, symmetric_map_tag, symmetric_map)                               \
+  X(ground_cell_size_t, ground_cell_size_tag, ground_cell_size)                      \
+  X(ground_threshold_t, ground_threshold_tag, ground_threshold)                      \
+  X(isolation_radius_t, isolation_radius_tag, isolation_radius)                      \
+  X(minimum_neighbors_t, minimum_neighbors_tag, minimum_neighbors)                   \
+  X(component_spacing_t, component_spacing_tag, component_spacing)                   \
+  X(maximum_component_extent_t, maximum_component_extent_tag, maximum_component_extent) \
+  X(local_origin_t, local_origin_tag, local_origin)                                  \
+  X(shift_to_local_origin_t, shift_to_local_origin_tag, shift_to_local_origin)
 
 #define CGAL_SHAPE_ANALYSIS_DECLARE_TAG(X, Y, Z) enum X { Y };
 CGAL_SHAPE_ANALYSIS_NAMED_PARAMETER_LIST(CGAL_SHAPE_ANALYSIS_DECLARE_TAG)

@@ -1,0 +1,146 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+// Scanned procedural streets: time to generate and scan them, time to remove their background,
+// and how well it does against the points' known classes.
+//
+//   bench_background_removal [--points 100000,1000000,10000000] [--threads 0] [--output FILE]
+//
+// Each size is a street of 400 m per million points (at least 100 m), seed 1. Figures: the
+// fraction of ground and building points removed, of object points kept and of background points
+// kept, and the objects (hit by the scanner) that keep at least half of their points.
+// JSON to stdout and to FILE; progress to stderr.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
+#include <CGAL/Point_set_object_recognition/remove_background.h>
+#include <CGAL/Shape_analysis/internal/Json.h>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 Point;
+typedef CGAL::Shape_analysis::internal::Json Json;
+namespace PSOR = CGAL::Point_set_object_recognition;
+namespace PSI = CGAL::Point_set_object_recognition::internal;
+
+double seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::vector<std::size_t> sizes = {100000, 1000000, 10000000};
+  std::size_t threads = 0;
+  std::string output;
+  for(int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if(i + 1 >= argc) {
+      std::cerr << "usage: bench_background_removal [--points a,b,...] [--threads N] [--output FILE]\n";
+      return 2;
+    }
+    const std::string v = argv[++i];
+    if(a == "--points") {
+      sizes.clear();
+      std::stringstream ss(v);
+      std::string item;
+      while(std::getline(ss, item, ','))
+        sizes.push_back(std::stoul(item));
+    } else if(a == "--threads")
+      threads = std::stoul(v);
+    else if(a == "--output")
+      output = v;
+    else {
+      std::cerr << "unknown option " << a << "\n";
+      return 2;
+    }
+  }
+  Json runs = Json::array();
+  for(std::size_t n : sizes) {
+    PSI::Urban_scene_options o;
+    o.seed = 1;
+    o.target_points = n;
+    o.street_length = (std::max)(100.0, 400.0 * double(n) / 1e6);
+    o.number_of_threads = threads;
+    std::cerr << n << " points, street of " << o.street_length << " m...\n";
+    const auto t0 = std::chrono::steady_clock::now();
+    const PSI::Urban_scene scene = PSI::make_urban_scene(o);
+    const PSI::Urban_scan scan = PSI::scan_urban_scene(scene, o);
+    const double generation = seconds_since(t0);
+    std::vector<Point> points;
+    points.reserve(scan.points.size());
+    for(const auto& p : scan.points)
+      points.emplace_back(p.x, p.y, p.z);
+    const auto t1 = std::chrono::steady_clock::now();
+    const PSOR::Background_removal_result r = PSOR::remove_background(points);
+    const double removal = seconds_since(t1);
+
+    std::size_t ground = 0, ground_removed = 0, building = 0, building_removed = 0, object = 0,
+                object_kept = 0, background = 0, background_kept = 0;
+    std::map<int, std::pair<std::size_t, std::size_t>> per_object;
+    for(std::size_t i = 0; i < scan.points.size(); ++i) {
+      const auto& p = scan.points[i];
+      const bool kept = r.kind[i] == PSOR::Point_kind::FOREGROUND;
+      if(p.instance > 0) {
+        ++object;
+        object_kept += kept;
+        auto& po = per_object[p.instance];
+        ++po.first;
+        po.second += kept;
+        continue;
+      }
+      ++background;
+      background_kept += kept;
+      if(p.label == PSI::GROUND) {
+        ++ground;
+        ground_removed += !kept;
+      } else if(p.label == PSI::BUILDING) {
+        ++building;
+        building_removed += !kept;
+      }
+    }
+    std::size_t half_kept = 0;
+    for(const auto& kv : per_object)
+      half_kept += 2 * kv.second.second >= kv.second.first;
+    Json j = Json::object();
+    j["points"] = scan.points.size();
+    j["street_length"] = o.street_length;
+    j["objects"] = scene.objects.size();
+    j["objects_hit"] = per_object.size();
+    j["object_points"] = object;
+    j["seconds_generation"] = generation;
+    j["seconds_background_removal"] = removal;
+    j["ground_removed"] = ground ? double(ground_removed) / double(ground) : 0.0;
+    j["building_removed"] = building ? double(building_removed) / double(building) : 0.0;
+    j["object_points_kept"] = object ? double(object_kept) / double(object) : 0.0;
+    j["background_points_kept"] = background ? double(background_kept) / double(background) : 0.0;
+    j["objects_keeping_half"] = half_kept;
+    j["foreground_points"] = r.foreground.size();
+    runs.push_back(j);
+    std::cerr << "  " << scan.points.size() << " points: generated in " << generation << " s, background removed in "
+              << removal << " s; object points kept " << j["object_points_kept"].dump() << ", background kept "
+              << j["background_points_kept"].dump() << ", objects keeping half " << half_kept << "/"
+              << per_object.size() << "\n";
+  }
+  Json result = Json::object();
+  result["benchmark"] = "background_removal";
+  result["threads"] = threads;
+  result["runs"] = runs;
+  const std::string text = result.dump();
+  std::cout << text << std::endl;
+  if(!output.empty())
+    std::ofstream(output) << text << std::endl;
+  return 0;
+}

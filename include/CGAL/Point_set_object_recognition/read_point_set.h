@@ -1,0 +1,299 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_POINT_SET_OBJECT_RECOGNITION_READ_POINT_SET_H
+#define CGAL_POINT_SET_OBJECT_RECOGNITION_READ_POINT_SET_H
+
+/// \file read_point_set.h
+
+#include <CGAL/Point_set_object_recognition/internal/Kitti_io.h>
+#include <CGAL/Point_set_object_recognition/internal/Las_io.h>
+#include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/parameters.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Point_set_3.h>
+#include <CGAL/Point_set_3/IO/PLY.h>
+#include <CGAL/Point_set_3/IO/XYZ.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Point_set_object_recognition {
+
+/// The named parameters of this package (this project's, and CGAL's usable in the same chain).
+namespace parameters = CGAL::Shape_analysis::parameters;
+using CGAL::Shape_analysis::Bad_input;
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+What `read_point_set()` read.
+*/
+struct Point_set_read_result
+{
+  /// The number of points read.
+  std::size_t number_of_points = 0;
+  /// The format of the file: `"ply"`, `"xyz"`, `"las"` or `"kitti"`.
+  std::string format;
+  /// The local origin subtracted from every point: a point of the file at \f$ (x, y, z) \f$ is at
+  /// \f$ (x, y, z) - \f$ `offset` in the point set; `{0, 0, 0}` when nothing was shifted.
+  std::array<double, 3> offset{{0, 0, 0}};
+  /// The names of the properties created in the point set besides the points, in order
+  /// (for example `"normal"`, `"intensity"`, `"classification"`, `"red"`).
+  std::vector<std::string> property_names;
+};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The extension of `filename` with its dot, in lower case ("" if it has none).
+inline std::string lowercase_extension(const std::string& filename)
+{
+  const std::size_t slash = filename.find_last_of("/\\");
+  const std::size_t dot = filename.find_last_of('.');
+  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return "";
+  std::string e = filename.substr(dot);
+  for(char& c : e)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+// The automatic local origin of points whose bounding box is [lo, hi]: per axis, 0 when the
+// coordinates on that axis are all below 1e5 in absolute value, else the minimum rounded down to
+// a multiple of 100.
+inline std::array<double, 3> automatic_local_origin(const std::array<double, 3>& lo,
+                                                    const std::array<double, 3>& hi)
+{
+  std::array<double, 3> o{{0, 0, 0}};
+  for(int c = 0; c < 3; ++c)
+    if(std::max(std::abs(lo[c]), std::abs(hi[c])) >= 1e5)
+      o[c] = std::floor(lo[c] / 100) * 100;
+  return o;
+}
+
+// Bounding box of points given as x, y, z triples; throws if a coordinate is not finite.
+inline void bounding_box(const std::vector<double>& xyz, std::array<double, 3>& lo, std::array<double, 3>& hi)
+{
+  for(std::size_t i = 0; i < xyz.size(); ++i) {
+    const double v = xyz[i];
+    const int c = static_cast<int>(i % 3);
+    if(!std::isfinite(v))
+      throw Bad_input("point " + std::to_string(i / 3) + " has a coordinate that is not finite");
+    lo[c] = i < 3 ? v : std::min(lo[c], v);
+    hi[c] = i < 3 ? v : std::max(hi[c], v);
+  }
+}
+
+// The origin to subtract: none, the one given, or the automatic one.
+template <typename NamedParameters>
+std::array<double, 3> choose_local_origin(const NamedParameters& np, const std::array<double, 3>& lo,
+                                          const std::array<double, 3>& hi)
+{
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  if(!CGAL::Shape_analysis::internal::parameter_value<bool>(np, snp::shift_to_local_origin_tag, true))
+    return {{0, 0, 0}};
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, snp::local_origin_t>::value) {
+    const std::array<double, 3> o = CGAL::parameters::get_parameter(np, snp::local_origin_tag);
+    return o;
+  } else {
+    return automatic_local_origin(lo, hi);
+  }
+}
+
+// Appends the points (x, y, z) - origin, the subtraction done in double.
+template <typename Point>
+void add_points(CGAL::Point_set_3<Point>& points, const std::vector<double>& xyz, const std::array<double, 3>& o)
+{
+  typedef typename CGAL::Kernel_traits<Point>::Kernel::FT FT;
+  points.reserve(xyz.size() / 3);
+  for(std::size_t i = 0; i + 2 < xyz.size(); i += 3)
+    points.insert(Point(FT(xyz[i] - o[0]), FT(xyz[i + 1] - o[1]), FT(xyz[i + 2] - o[2])));
+}
+
+// Adds the property `name` with one value per point, in point order (nothing if `values` is empty).
+template <typename Point, typename T>
+void add_property(CGAL::Point_set_3<Point>& points, const std::string& name, const std::vector<T>& values)
+{
+  if(values.empty())
+    return;
+  auto pm = points.template add_property_map<T>(name, T()).first;
+  std::size_t k = 0;
+  for(typename CGAL::Point_set_3<Point>::Index i : points)
+    pm[i] = values[k++];
+}
+
+// Reads a PLY or XYZ file with CGAL's readers, then shifts the points to their local origin.
+template <typename Point, typename NamedParameters>
+std::array<double, 3> read_with_cgal(const std::string& filename, bool ply, CGAL::Point_set_3<Point>& points,
+                                     const NamedParameters& np)
+{
+  typedef typename CGAL::Kernel_traits<Point>::Kernel::FT FT;
+  if(!std::ifstream(filename))
+    throw Bad_input(filename + ": cannot open the file for reading");
+  const bool ok = ply ? CGAL::IO::read_PLY(filename, points) : CGAL::IO::read_XYZ(filename, points);
+  if(!ok)
+    throw Bad_input(filename + (ply ? ": cannot read the file as PLY" : ": cannot read the file as XYZ (lines 'x y z [nx ny nz]')"));
+  std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
+  std::vector<double> xyz;
+  xyz.reserve(3 * points.size());
+  for(typename CGAL::Point_set_3<Point>::Index i : points) {
+    const Point& p = points.point(i);
+    xyz.insert(xyz.end(), {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+  }
+  bounding_box(xyz, lo, hi);
+  const std::array<double, 3> o = choose_local_origin(np, lo, hi);
+  if(o[0] != 0 || o[1] != 0 || o[2] != 0) {
+    std::size_t k = 0;
+    for(typename CGAL::Point_set_3<Point>::Index i : points) {
+      points.point(i) = Point(FT(xyz[k] - o[0]), FT(xyz[k + 1] - o[1]), FT(xyz[k + 2] - o[2]));
+      k += 3;
+    }
+  }
+  return o;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+
+Reads a point cloud file into a point set, with its per-point properties, and shifts
+georeferenced coordinates to a local origin without loss of precision.
+
+The format is chosen by the extension of `filename`, in any case:
+- `.ply`: \cgal's PLY reader (`CGAL::IO::read_PLY()`), ASCII or binary; normals become the normal
+  map and every other vertex property becomes a property of the same name and type (for example
+  `red`, `green`, `blue` as `unsigned char`, `label` as `int`).
+- `.xyz`, `.pts`, `.txt`: \cgal's XYZ reader, one point a line, `x y z` or `x y z nx ny nz`
+  (a first line holding only the number of points and lines starting with `#` are skipped).
+- `.las`: uncompressed ASPRS LAS 1.0 to 1.4, point data formats 0 to 10; variable length records
+  and extra bytes of the records are skipped. Properties: `intensity` (`unsigned short`),
+  `classification`, `return_number`, `number_of_returns` (`unsigned char`), and where the format
+  has them `gps_time` (`double`; formats 1, 3-10) and `red`, `green`, `blue` (`unsigned short`;
+  formats 2, 3, 5, 7, 8, 10). Compressed LAZ files are refused.
+- `.bin`: KITTI velodyne scans, records of float32 `x`, `y`, `z`, `reflectance`, little-endian;
+  property `reflectance` (`float`).
+
+<b>Local origin.</b> Map projections (UTM: \f$ x \approx 5 \cdot 10^5 \f$,
+\f$ y \approx 4 \cdot 10^6 \f$ m) leave few significant digits for local geometry, so the points
+are shifted: the local origin is subtracted from the coordinates of the file in double precision
+before the points are built (for LAS, from the scaled integers), so that a coordinate such as
+500123.456 keeps its millimetres. The automatic origin is chosen per axis: 0 if all coordinates
+on that axis are below \f$ 10^5 \f$ in absolute value (local or small data are not moved, and
+heights stay heights), otherwise the minimum of the coordinates on that axis rounded down to a
+multiple of 100. The origin used is returned in `Point_set_read_result::offset`; adding it back
+gives the coordinates of the file.
+
+\tparam Point a point type of a \cgal kernel (for example `CGAL::Epick::Point_3`)
+\tparam NamedParameters a sequence of named parameters
+
+\param filename the file to read
+\param points receives the points and their properties; its former content and properties are
+       removed (on failure it is left empty)
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{shift_to_local_origin}
+    \cgalParamDescription{whether the points are shifted to a local origin; `false` keeps the
+      coordinates of the file}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{local_origin}
+    \cgalParamDescription{the local origin subtracted from every point, instead of the automatic
+      one described above}
+    \cgalParamType{`std::array<double, 3>`}
+    \cgalParamDefault{automatic: per axis, 0 for coordinates below \f$ 10^5 \f$ in absolute value,
+      else the minimum rounded down to a multiple of 100}
+    \cgalParamExtra{must be finite; cannot be combined with `shift_to_local_origin(false)`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the number of points, the format, the local origin subtracted and the property names
+
+\throws CGAL::Shape_analysis::Bad_input with a one-line message if the file cannot be opened or
+        read, has an unknown extension, is compressed LAZ, is truncated or inconsistent (LAS
+        signature, version, point data format, record length, point count and file size), holds
+        no points or a coordinate that is not finite, or if the parameters contradict each other
+*/
+template <typename Point, typename NamedParameters = parameters::Default_named_parameters>
+Point_set_read_result read_point_set(const std::string& filename, CGAL::Point_set_3<Point>& points,
+                                     const NamedParameters& np = parameters::default_values())
+{
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  const std::string who = "read_point_set: ";
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, snp::local_origin_t>::value) {
+    const std::array<double, 3> o = CGAL::parameters::get_parameter(np, snp::local_origin_tag);
+    if(!std::isfinite(o[0]) || !std::isfinite(o[1]) || !std::isfinite(o[2]))
+      throw Bad_input(who + "local_origin must be finite");
+    if(!CGAL::Shape_analysis::internal::parameter_value<bool>(np, snp::shift_to_local_origin_tag, true))
+      throw Bad_input(who + "local_origin is given but shift_to_local_origin is false");
+  }
+
+  const std::string ext = internal::lowercase_extension(filename);
+  Point_set_read_result result;
+  if(ext == ".ply")
+    result.format = "ply";
+  else if(ext == ".xyz" || ext == ".pts" || ext == ".txt")
+    result.format = "xyz";
+  else if(ext == ".las")
+    result.format = "las";
+  else if(ext == ".bin")
+    result.format = "kitti";
+  else if(ext == ".laz")
+    throw Bad_input(who + filename + ": compressed LAZ is not supported; decompress it with laszip");
+  else
+    throw Bad_input(who + filename + ": unknown point-set file extension \"" + ext +
+                    "\" (.ply, .xyz, .pts, .txt, .las and .bin are read)");
+
+  points.clear();
+  try {
+    std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
+    if(result.format == "ply" || result.format == "xyz") {
+      result.offset = internal::read_with_cgal(filename, result.format == "ply", points, np);
+    } else if(result.format == "las") {
+      const internal::Las_data d = internal::read_las(filename);
+      internal::bounding_box(d.xyz, lo, hi);
+      result.offset = internal::choose_local_origin(np, lo, hi);
+      internal::add_points(points, d.xyz, result.offset);
+      internal::add_property(points, "intensity", d.intensity);
+      internal::add_property(points, "classification", d.classification);
+      internal::add_property(points, "return_number", d.return_number);
+      internal::add_property(points, "number_of_returns", d.number_of_returns);
+      internal::add_property(points, "gps_time", d.gps_time);
+      internal::add_property(points, "red", d.red);
+      internal::add_property(points, "green", d.green);
+      internal::add_property(points, "blue", d.blue);
+    } else {
+      const internal::Kitti_data d = internal::read_kitti(filename);
+      internal::bounding_box(d.xyz, lo, hi);
+      result.offset = internal::choose_local_origin(np, lo, hi);
+      internal::add_points(points, d.xyz, result.offset);
+      internal::add_property(points, "reflectance", d.reflectance);
+    }
+    if(points.empty())
+      throw Bad_input(filename + ": the file contains no points");
+  } catch(const Bad_input& e) {
+    points.clear();
+    // The readers' messages start with the file name; the coordinate check's does not.
+    const std::string what = e.what();
+    throw Bad_input(who + (what.compare(0, filename.size(), filename) == 0 ? what : filename + ": " + what));
+  }
+  result.number_of_points = points.size();
+  result.property_names = points.properties();
+  return result;
+}
+
+} // namespace Point_set_object_recognition
+} // namespace CGAL
+
+#endif // CGAL_POINT_SET_OBJECT_RECOGNITION_READ_POINT_SET_H

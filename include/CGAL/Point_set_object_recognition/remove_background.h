@@ -1,0 +1,515 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_POINT_SET_OBJECT_RECOGNITION_REMOVE_BACKGROUND_H
+#define CGAL_POINT_SET_OBJECT_RECOGNITION_REMOVE_BACKGROUND_H
+
+/// \file remove_background.h
+/// Background removal in scanned urban scenes: the ground, isolated points and very large
+/// connected components (buildings).
+
+#include <CGAL/Point_set_3.h>
+#include <CGAL/property_map.h>
+
+#include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/parameters.h>
+#include <CGAL/Shape_analysis/internal/Union_find.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Point_set_object_recognition {
+
+namespace parameters = CGAL::Shape_analysis::parameters;
+using CGAL::Shape_analysis::Bad_input;
+
+/// \ingroup PkgPointSetObjectRecognitionRef
+/// What `remove_background()` made of a point.
+enum class Point_kind : unsigned char {
+  FOREGROUND = 0,     ///< kept: a candidate part of a small object
+  GROUND = 1,         ///< less than `ground_threshold` above the estimated ground
+  ISOLATED = 2,       ///< fewer than `minimum_neighbors` other points within `isolation_radius`
+  LARGE_COMPONENT = 3 ///< in a connected component wider than `maximum_component_extent`
+};
+
+/// \ingroup PkgPointSetObjectRecognitionRef
+/// The estimated ground: one plane \f$z = a x + b y + c\f$ per cell of a uniform grid in
+/// \f$(x, y)\f$, blended bilinearly between cell centres.
+struct Ground_grid
+{
+  double x0 = 0, y0 = 0;            ///< the corner of cell (0, 0)
+  double cell_size = 1;             ///< the side of a cell
+  std::size_t nx = 0, ny = 0;       ///< the number of cells along x and y
+  std::vector<std::array<double, 3>> planes; ///< (a, b, c) per cell, row-major (i + nx j)
+
+  /// The ground height at (x, y): the planes of the four nearest cell centres evaluated at
+  /// (x, y), blended bilinearly (the grid is clamped at its border).
+  /// \param x the first coordinate of the point
+  /// \param y the second coordinate of the point
+  /// \returns the height of the ground at (x, y), 0 for an empty grid
+  double height(double x, double y) const
+  {
+    if(planes.empty())
+      return 0;
+    const double u = (x - x0) / cell_size - 0.5, v = (y - y0) / cell_size - 0.5;
+    const double fu = std::floor(u), fv = std::floor(v);
+    const double su = u - fu, sv = v - fv;
+    double h = 0;
+    for(int dj = 0; dj < 2; ++dj)
+      for(int di = 0; di < 2; ++di) {
+        const long i = (std::min)((std::max)(long(fu) + di, 0L), long(nx) - 1);
+        const long j = (std::min)((std::max)(long(fv) + dj, 0L), long(ny) - 1);
+        const auto& p = planes[std::size_t(i) + nx * std::size_t(j)];
+        const double w = (di ? su : 1 - su) * (dj ? sv : 1 - sv);
+        h += w * (p[0] * x + p[1] * y + p[2]);
+      }
+    return h;
+  }
+};
+
+/// \ingroup PkgPointSetObjectRecognitionRef
+/// The result of `remove_background()`.
+struct Background_removal_result
+{
+  std::vector<Point_kind> kind;             ///< per point, in input order
+  std::vector<double> height_above_ground;  ///< per point
+  std::vector<std::size_t> foreground;      ///< the indices of the points kept, increasing
+  std::size_t number_of_ground_points = 0;
+  std::size_t number_of_isolated_points = 0;
+  std::size_t number_of_large_component_points = 0;
+  Ground_grid ground;                       ///< the estimated ground
+};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+struct Background_options
+{
+  double cell = 5, threshold = 0.2, isolation = 0.5, spacing = 0.5, extent = 12;
+  std::size_t neighbors = 3;
+};
+
+// Integer voxel key of a point for a grid of side `s`.
+inline std::uint64_t voxel_key(double x, double y, double z, double s, const std::array<double, 3>& lo)
+{
+  const std::uint64_t i = std::uint64_t((x - lo[0]) / s), j = std::uint64_t((y - lo[1]) / s),
+                      k = std::uint64_t((z - lo[2]) / s);
+  return (i & 0x1FFFFF) | ((j & 0x1FFFFF) << 21) | ((k & 0x1FFFFF) << 42);
+}
+
+inline std::uint64_t voxel_neighbor(std::uint64_t key, int di, int dj, int dk)
+{
+  const long i = long(key & 0x1FFFFF) + di, j = long((key >> 21) & 0x1FFFFF) + dj,
+             k = long((key >> 42) & 0x1FFFFF) + dk;
+  if(i < 0 || j < 0 || k < 0)
+    return std::numeric_limits<std::uint64_t>::max();
+  return std::uint64_t(i) | (std::uint64_t(j) << 21) | (std::uint64_t(k) << 42);
+}
+
+// Least-squares plane z = a x + b y + c through the points `idx` (coordinates relative to
+// (cx, cy)); false when they do not determine one, or do not spread over the cell in both x and
+// y (standard deviation under `spread`: the foot of a wall, a lone object).
+inline bool fit_plane(const std::vector<std::array<double, 3>>& p, const std::vector<std::size_t>& idx,
+                      double cx, double cy, double spread, std::array<double, 3>& plane)
+{
+  if(idx.size() < 3)
+    return false;
+  double sxx = 0, sxy = 0, syy = 0, sx = 0, sy = 0, sz = 0, sxz = 0, syz = 0;
+  const double n = double(idx.size());
+  for(std::size_t i : idx) {
+    const double x = p[i][0] - cx, y = p[i][1] - cy, z = p[i][2];
+    sxx += x * x, sxy += x * y, syy += y * y, sx += x, sy += y, sz += z, sxz += x * z, syz += y * z;
+  }
+  // Centred normal equations.
+  const double mx = sx / n, my = sy / n, mz = sz / n;
+  const double cxx = sxx / n - mx * mx, cxy = sxy / n - mx * my, cyy = syy / n - my * my;
+  const double cxz = sxz / n - mx * mz, cyz = syz / n - my * mz;
+  if(cxx < spread * spread || cyy < spread * spread)
+    return false;
+  const double det = cxx * cyy - cxy * cxy;
+  double a = 0, b = 0;
+  if(det > 1e-6 * (cxx + cyy) * (cxx + cyy) && det > 0) {
+    a = (cxz * cyy - cyz * cxy) / det;
+    b = (cyz * cxx - cxz * cxy) / det;
+  }
+  // A ground steeper than 45 degrees is a wall: keep it level.
+  if(!(std::abs(a) < 1 && std::abs(b) < 1))
+    a = b = 0;
+  plane = {a, b, mz - a * mx - b * my - a * cx - b * cy};
+  return std::isfinite(plane[2]);
+}
+
+inline Background_removal_result remove_background(const std::vector<std::array<double, 3>>& p,
+                                                   const Background_options& o)
+{
+  Background_removal_result r;
+  const std::size_t n = p.size();
+  r.kind.assign(n, Point_kind::FOREGROUND);
+  r.height_above_ground.assign(n, 0.0);
+  if(n == 0)
+    return r;
+  std::array<double, 3> lo{{p[0][0], p[0][1], p[0][2]}}, hi = lo;
+  for(const auto& q : p)
+    for(int c = 0; c < 3; ++c) {
+      if(!std::isfinite(q[std::size_t(c)]))
+        throw Bad_input("remove_background: a point coordinate is not a finite number");
+      lo[std::size_t(c)] = (std::min)(lo[std::size_t(c)], q[std::size_t(c)]);
+      hi[std::size_t(c)] = (std::max)(hi[std::size_t(c)], q[std::size_t(c)]);
+    }
+  for(int c = 0; c < 3; ++c)
+    if((hi[std::size_t(c)] - lo[std::size_t(c)]) / (std::min)(o.cell, (std::min)(o.isolation, o.spacing)) > 2.0e6)
+      throw Bad_input("remove_background: the scene is too large for the grid sizes (more than "
+                      "two million cells along an axis); process it in tiles");
+
+  // 1. The ground: per cell, a plane started at the cell's low points and refitted to the
+  //    points near it, with a shrinking band.
+  Ground_grid& g = r.ground;
+  g.cell_size = o.cell;
+  g.x0 = lo[0];
+  g.y0 = lo[1];
+  g.nx = std::size_t((hi[0] - lo[0]) / o.cell) + 1;
+  g.ny = std::size_t((hi[1] - lo[1]) / o.cell) + 1;
+  const std::size_t cells = g.nx * g.ny;
+  std::vector<std::size_t> start(cells + 1, 0), order(n);
+  const auto cell_of = [&](std::size_t i) {
+    const std::size_t ci = (std::min)(std::size_t((p[i][0] - g.x0) / o.cell), g.nx - 1);
+    const std::size_t cj = (std::min)(std::size_t((p[i][1] - g.y0) / o.cell), g.ny - 1);
+    return ci + g.nx * cj;
+  };
+  for(std::size_t i = 0; i < n; ++i)
+    ++start[cell_of(i) + 1];
+  for(std::size_t c = 0; c < cells; ++c)
+    start[c + 1] += start[c];
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for(std::size_t i = 0; i < n; ++i)
+      order[fill[cell_of(i)]++] = i;
+  }
+  g.planes.assign(cells, {0, 0, 0});
+  std::vector<char> valid(cells, 0);
+  std::vector<double> zs;
+  std::vector<std::size_t> near;
+  for(std::size_t c = 0; c < cells; ++c) {
+    const std::size_t b = start[c], e = start[c + 1];
+    if(e - b < 3)
+      continue;
+    zs.clear();
+    for(std::size_t k = b; k < e; ++k)
+      zs.push_back(p[order[k]][2]);
+    const std::size_t q = (zs.size() - 1) / 20; // the 5th percentile: below it, noise
+    std::nth_element(zs.begin(), zs.begin() + long(q), zs.end());
+    std::array<double, 3> plane{{0, 0, zs[q]}};
+    bool fitted = false;
+    const double cx = g.x0 + (double(c % g.nx) + 0.5) * o.cell, cy = g.y0 + (double(c / g.nx) + 0.5) * o.cell;
+    for(double band : {1.0, 0.5, 0.3, 0.2}) {
+      near.clear();
+      for(std::size_t k = b; k < e; ++k) {
+        const std::size_t i = order[k];
+        const double d = p[i][2] - (plane[0] * p[i][0] + plane[1] * p[i][1] + plane[2]);
+        if(d > -band && d < band)
+          near.push_back(i);
+      }
+      std::array<double, 3> next;
+      if(!fit_plane(p, near, cx, cy, o.cell / 8, next))
+        break;
+      plane = next;
+      fitted = true;
+    }
+    g.planes[c] = plane;
+    valid[c] = fitted ? 1 : 0;
+  }
+  // A cell whose ground stands well above all its neighbours' (a roof, a car seen alone) takes
+  // theirs; empty cells take the ones of the nearest filled cells.
+  const auto centre_height = [&](std::size_t c) {
+    const auto& pl = g.planes[c];
+    const double cx = g.x0 + (double(c % g.nx) + 0.5) * o.cell, cy = g.y0 + (double(c / g.nx) + 0.5) * o.cell;
+    return pl[0] * cx + pl[1] * cy + pl[2];
+  };
+  // Compared with the lowest fitted ground within 20 m: a rise of more than 1 m plus 30% of
+  // the distance is not ground.
+  std::vector<char> keep = valid;
+  const long reach = (std::max)(1L, long(std::ceil(20.0 / o.cell)));
+  for(std::size_t c = 0; c < cells; ++c) {
+    if(!valid[c])
+      continue;
+    const long ci = long(c % g.nx), cj = long(c / g.nx);
+    const double h = centre_height(c);
+    for(long dj = -reach; dj <= reach && keep[c]; ++dj)
+      for(long di = -reach; di <= reach; ++di) {
+        const long i = ci + di, j = cj + dj;
+        if((di == 0 && dj == 0) || i < 0 || j < 0 || i >= long(g.nx) || j >= long(g.ny))
+          continue;
+        const std::size_t d = std::size_t(i) + g.nx * std::size_t(j);
+        if(valid[d] && h > centre_height(d) + 1.0 + 0.3 * o.cell * std::hypot(double(di), double(dj))) {
+          keep[c] = 0;
+          break;
+        }
+      }
+  }
+  {
+    // Breadth-first filling from the kept cells (deterministic order).
+    std::vector<std::size_t> frontier, next;
+    for(std::size_t c = 0; c < cells; ++c)
+      if(keep[c])
+        frontier.push_back(c);
+    if(frontier.empty()) {
+      for(std::size_t c = 0; c < cells; ++c)
+        if(valid[c]) {
+          keep[c] = 1;
+          frontier.push_back(c);
+        }
+    }
+    while(!frontier.empty()) {
+      next.clear();
+      for(std::size_t c : frontier) {
+        const long ci = long(c % g.nx), cj = long(c / g.nx);
+        for(const auto& d4 : {std::array<long, 2>{{1, 0}}, std::array<long, 2>{{-1, 0}},
+                              std::array<long, 2>{{0, 1}}, std::array<long, 2>{{0, -1}}}) {
+          const long i = ci + d4[0], j = cj + d4[1];
+          if(i < 0 || j < 0 || i >= long(g.nx) || j >= long(g.ny))
+            continue;
+          const std::size_t d = std::size_t(i) + g.nx * std::size_t(j);
+          if(keep[d])
+            continue;
+          keep[d] = 1;
+          // The neighbour's plane, level, at its height at this cell's centre.
+          const auto& pl = g.planes[c];
+          const double cx = g.x0 + (double(i) + 0.5) * o.cell, cy = g.y0 + (double(j) + 0.5) * o.cell;
+          g.planes[d] = {0, 0, pl[0] * cx + pl[1] * cy + pl[2]};
+          next.push_back(d);
+        }
+      }
+      frontier.swap(next);
+    }
+  }
+  for(std::size_t i = 0; i < n; ++i) {
+    r.height_above_ground[i] = p[i][2] - g.height(p[i][0], p[i][1]);
+    if(r.height_above_ground[i] < o.threshold) {
+      r.kind[i] = Point_kind::GROUND;
+      ++r.number_of_ground_points;
+    }
+  }
+
+  // 2. Isolated points: too few other non-ground points in the voxels around them.
+  std::unordered_map<std::uint64_t, std::uint32_t> count;
+  count.reserve(n - r.number_of_ground_points);
+  for(std::size_t i = 0; i < n; ++i)
+    if(r.kind[i] == Point_kind::FOREGROUND)
+      ++count[voxel_key(p[i][0], p[i][1], p[i][2], o.isolation, lo)];
+  std::unordered_map<std::uint64_t, std::uint32_t> around;
+  around.reserve(count.size());
+  for(const auto& kv : count) {
+    std::uint32_t s = 0;
+    for(int dk = -1; dk <= 1; ++dk)
+      for(int dj = -1; dj <= 1; ++dj)
+        for(int di = -1; di <= 1; ++di) {
+          const auto it = count.find(voxel_neighbor(kv.first, di, dj, dk));
+          if(it != count.end())
+            s += it->second;
+        }
+    around[kv.first] = s;
+  }
+  for(std::size_t i = 0; i < n; ++i)
+    if(r.kind[i] == Point_kind::FOREGROUND &&
+       around[voxel_key(p[i][0], p[i][1], p[i][2], o.isolation, lo)] < o.neighbors + 1) {
+      r.kind[i] = Point_kind::ISOLATED;
+      ++r.number_of_isolated_points;
+    }
+
+  // 3. Connected components of the remaining points (occupied voxels of side
+  //    `component_spacing`, 26-connected); the ones wider than `maximum_component_extent` go.
+  std::unordered_map<std::uint64_t, std::uint32_t> voxel;
+  std::vector<std::uint64_t> keys;
+  for(std::size_t i = 0; i < n; ++i)
+    if(r.kind[i] == Point_kind::FOREGROUND) {
+      const std::uint64_t k = voxel_key(p[i][0], p[i][1], p[i][2], o.spacing, lo);
+      if(voxel.emplace(k, std::uint32_t(keys.size())).second)
+        keys.push_back(k);
+    }
+  CGAL::Shape_analysis::internal::Union_find uf(keys.size());
+  for(std::size_t v = 0; v < keys.size(); ++v)
+    for(int dk = -1; dk <= 1; ++dk)
+      for(int dj = -1; dj <= 1; ++dj)
+        for(int di = -1; di <= 1; ++di) {
+          const auto it = voxel.find(voxel_neighbor(keys[v], di, dj, dk));
+          if(it != voxel.end())
+            uf.unite(std::uint32_t(v), it->second);
+        }
+  std::vector<std::array<double, 4>> box(keys.size(), {std::numeric_limits<double>::infinity(),
+                                                       std::numeric_limits<double>::infinity(),
+                                                       -std::numeric_limits<double>::infinity(),
+                                                       -std::numeric_limits<double>::infinity()});
+  std::vector<std::uint32_t> root_of_point(n, 0);
+  for(std::size_t i = 0; i < n; ++i)
+    if(r.kind[i] == Point_kind::FOREGROUND) {
+      const std::uint32_t root = uf.find(voxel[voxel_key(p[i][0], p[i][1], p[i][2], o.spacing, lo)]);
+      root_of_point[i] = root;
+      auto& b = box[root];
+      b[0] = (std::min)(b[0], p[i][0]), b[1] = (std::min)(b[1], p[i][1]);
+      b[2] = (std::max)(b[2], p[i][0]), b[3] = (std::max)(b[3], p[i][1]);
+    }
+  for(std::size_t i = 0; i < n; ++i) {
+    if(r.kind[i] != Point_kind::FOREGROUND)
+      continue;
+    const auto& b = box[root_of_point[i]];
+    if(std::hypot(b[2] - b[0], b[3] - b[1]) > o.extent) {
+      r.kind[i] = Point_kind::LARGE_COMPONENT;
+      ++r.number_of_large_component_points;
+    } else
+      r.foreground.push_back(i);
+  }
+  return r;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+
+Removes the background of a scanned urban scene (\cgalCite{Golovinskiy2010}, section 4.3.2), so
+that what remains are candidate parts of small objects:
+
+1. <b>Ground.</b> The points are binned in a uniform grid of `ground_cell_size` in \f$(x, y)\f$.
+   In each cell a plane starts level at the 5th percentile of the heights and is refitted by
+   least squares to the points within a band around it, the band shrinking from 1 m to 0.2 m. A
+   cell whose points near that plane do not spread over it (the foot of a wall seen from the
+   street, a lone object), whose ground rises above another cell's within 20 m by more than 1 m
+   plus 30% of their distance (a roof), or that is empty takes the ground of its neighbours. The ground height is blended
+   bilinearly between cell centres; points less than `ground_threshold` above it are ground.
+2. <b>Isolated points.</b> A remaining point with fewer than `minimum_neighbors` other remaining
+   points in the \f$3 \times 3 \times 3\f$ voxels of side `isolation_radius` around its own is
+   isolated.
+3. <b>Large components.</b> The other points are grouped into connected components (occupied
+   voxels of side `component_spacing`, touching by a face, an edge or a corner); components whose
+   horizontal bounding-box diagonal exceeds `maximum_component_extent` (buildings, long walls)
+   are removed.
+
+Coordinates are expected in metres with \f$z\f$ up. The result does not depend on the order of the
+points (up to the rounding of the plane fits).
+
+\tparam PointRange a model of `ConstRange` whose iterator type is `RandomAccessIterator`
+\tparam NamedParameters a sequence of named parameters
+
+\param points the points (for a `CGAL::Point_set_3`, use the overload taking it)
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{point_map}
+    \cgalParamDescription{a property map associating points to the elements of `points`}
+    \cgalParamType{a model of `ReadablePropertyMap` whose value type is a point of a \cgal kernel}
+    \cgalParamDefault{`CGAL::Identity_property_map`}
+  \cgalParamNEnd
+  \cgalParamNBegin{ground_cell_size}
+    \cgalParamDescription{the side of the cells of the ground grid, in metres}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`5`}
+    \cgalParamExtra{must be positive}
+  \cgalParamNEnd
+  \cgalParamNBegin{ground_threshold}
+    \cgalParamDescription{points less than this above the ground are ground, in metres}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0.2`}
+  \cgalParamNEnd
+  \cgalParamNBegin{isolation_radius}
+    \cgalParamDescription{the side of the voxels in which neighbours are counted, in metres}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0.5`}
+    \cgalParamExtra{must be positive}
+  \cgalParamNEnd
+  \cgalParamNBegin{minimum_neighbors}
+    \cgalParamDescription{a point with fewer neighbours is isolated (0: none is)}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`3`}
+  \cgalParamNEnd
+  \cgalParamNBegin{component_spacing}
+    \cgalParamDescription{the side of the voxels whose contact makes connected components, in metres}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0.5`}
+    \cgalParamExtra{must be positive}
+  \cgalParamNEnd
+  \cgalParamNBegin{maximum_component_extent}
+    \cgalParamDescription{components with a wider horizontal bounding box are removed, in metres}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`12`}
+    \cgalParamExtra{must be positive}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns per point its `Point_kind` and height above the ground, the indices of the points kept,
+         counts, and the ground grid
+
+\throws CGAL::Shape_analysis::Bad_input if a coordinate is not finite, a parameter is out of its
+        range, or the scene is too large for the grid sizes (more than two million cells along an
+        axis: process it in tiles)
+*/
+template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+Background_removal_result remove_background(const PointRange& points,
+                                            const NamedParameters& np = parameters::default_values())
+{
+  namespace SAI = CGAL::Shape_analysis::internal;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename std::iterator_traits<typename PointRange::const_iterator>::value_type Value;
+  const auto point_map =
+    choose_parameter(get_parameter(np, CGAL::internal_np::point_map), CGAL::Identity_property_map<Value>());
+  internal::Background_options o;
+  o.cell = SAI::parameter_value<double>(np, snp::ground_cell_size_tag, 5.0);
+  o.threshold = SAI::parameter_value<double>(np, snp::ground_threshold_tag, 0.2);
+  o.isolation = SAI::parameter_value<double>(np, snp::isolation_radius_tag, 0.5);
+  o.neighbors = SAI::parameter_value<std::size_t>(np, snp::minimum_neighbors_tag, std::size_t(3));
+  o.spacing = SAI::parameter_value<double>(np, snp::component_spacing_tag, 0.5);
+  o.extent = SAI::parameter_value<double>(np, snp::maximum_component_extent_tag, 12.0);
+  const auto positive = [](double v) { return v > 0 && std::isfinite(v); };
+  if(!positive(o.cell))
+    throw Bad_input("remove_background: ground_cell_size must be a positive number");
+  if(!std::isfinite(o.threshold))
+    throw Bad_input("remove_background: ground_threshold must be a finite number");
+  if(!positive(o.isolation))
+    throw Bad_input("remove_background: isolation_radius must be a positive number");
+  if(!positive(o.spacing))
+    throw Bad_input("remove_background: component_spacing must be a positive number");
+  if(!positive(o.extent))
+    throw Bad_input("remove_background: maximum_component_extent must be a positive number");
+  std::vector<std::array<double, 3>> p;
+  p.reserve(std::size_t(std::distance(std::begin(points), std::end(points))));
+  for(const auto& v : points) {
+    const auto& q = get(point_map, v);
+    p.push_back({CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())});
+  }
+  return internal::remove_background(p, o);
+}
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+`remove_background()` of the points of a `CGAL::Point_set_3` (its point map).
+\tparam Point the point type of the point set
+\tparam Vector the normal type of the point set
+\tparam NamedParameters a sequence of named parameters
+\param point_set the points
+\param np the same named parameters as the other overload, but `point_map`
+\returns as the other overload; indices follow the point set's iteration order
+*/
+template <typename Point, typename Vector, typename NamedParameters = parameters::Default_named_parameters>
+Background_removal_result remove_background(const CGAL::Point_set_3<Point, Vector>& point_set,
+                                            const NamedParameters& np = parameters::default_values())
+{
+  std::vector<Point> points;
+  points.reserve(point_set.size());
+  for(auto i : point_set)
+    points.push_back(point_set.point(i));
+  return remove_background(points, np);
+}
+
+} // namespace Point_set_object_recognition
+} // namespace CGAL
+
+#endif // CGAL_POINT_SET_OBJECT_RECOGNITION_REMOVE_BACKGROUND_H
