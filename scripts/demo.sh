@@ -3,6 +3,8 @@
 # the partition function of the camel and segments the elephant along its most consistent cuts,
 # segments four animals consistently and the cow symmetrically, finds the cow's symmetry planes,
 # symmetrizes it and exaggerates its asymmetries, and mirrors colours across the camel's plane;
+# scans a procedural street with a simulated LIDAR and removes the background of it and of an
+# airborne scan;
 # writes coloured meshes (open them in MeshLab or CloudCompare), Princeton-benchmark label files,
 # edge values and JSON reports to build/demo/. Installs missing Debian packages and builds the
 # tool first.
@@ -55,7 +57,18 @@ segment blobby_3cc 3
 "$tool" symmetry transfer "$data/camel.off" --colors "$out/camel_partition.ply" \
   --output "$out/camel_partition_mirrored.ply" --report "$out/camel_partition_mirrored.json" --verbose
 
+# Point clouds (Point_set_object_recognition): a street of 400 m scanned by a simulated mobile
+# LIDAR (colours by class, the objects' ground truth in JSON), its background removed (ground,
+# isolated points, buildings), and the background of CGAL's airborne scan b9_training.ply.
+"$tool" points scene --points 1000000 --length 400 --output "$out/street_scan.ply" \
+  --objects "$out/street_objects.json" --report "$out/street_scan.json" --verbose
+"$tool" points background "$out/street_scan.ply" --output "$out/street_foreground.ply" \
+  --report "$out/street_foreground.json" --verbose
+"$tool" points background "$data/b9_training.ply" --max-extent 6 --spacing 1 --isolation-radius 1 \
+  --output "$out/b9_foreground.ply" --report "$out/b9_foreground.json" --verbose
+
 echo
 echo "Coloured segmentations (per-face colours) and partition functions (per-vertex colours) in $out:"
 ls -1 "$out"/*.ply "$out"/coseg/*.ply "$out"/coseg_symmetric/*.ply
 echo "Symmetrized and enhanced meshes: $out/cow_symmetric.off, $out/cow_asymmetry_tripled.off"
+echo "Point clouds: $out/street_scan.ply (objects: $out/street_objects.json), $out/street_foreground.ply, $out/b9_foreground.ply"
