@@ -1,8 +1,9 @@
 // Copyright (c) 2026 CGAL Global Shape Analysis contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-// Scanned procedural streets: time to generate and scan them, time to remove their background,
-// and how well it does against the points' known classes.
+// Scanned procedural streets: time to generate and scan them, time to remove their background
+// and to locate the objects (connected components), and how well both do against the points'
+// known classes and the objects' known locations (within 1 m).
 //
 //   bench_background_removal [--points 100000,1000000,10000000] [--threads 0] [--output FILE]
 //
@@ -14,6 +15,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
+#include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
 #include <CGAL/Shape_analysis/internal/Json.h>
 
@@ -128,6 +130,27 @@ int main(int argc, char** argv)
     j["background_points_kept"] = background ? double(background_kept) / double(background) : 0.0;
     j["objects_keeping_half"] = half_kept;
     j["foreground_points"] = r.foreground.size();
+    {
+      std::vector<Point> foreground;
+      for(std::size_t i : r.foreground)
+        foreground.push_back(points[i]);
+      const auto t2 = std::chrono::steady_clock::now();
+      const PSOR::Localization_result l = PSOR::locate_objects(foreground);
+      const double seconds = seconds_since(t2);
+      std::vector<std::array<double, 2>> truth;
+      for(const auto& b : scene.objects)
+        truth.push_back({b.x, b.y});
+      const PSOR::Localization_evaluation e = PSOR::evaluate_locations(l.locations, truth, 1.0);
+      Json jl = Json::object();
+      jl["method"] = "connected components";
+      jl["seconds"] = seconds;
+      jl["locations"] = l.locations.size();
+      jl["precision"] = e.precision;
+      jl["recall"] = e.recall;
+      j["localization"] = jl;
+      std::cerr << "  localization: " << l.locations.size() << " locations in " << seconds << " s, precision "
+                << e.precision << ", recall " << e.recall << " (" << scene.objects.size() << " objects)\n";
+    }
     runs.push_back(j);
     std::cerr << "  " << scan.points.size() << " points: generated in " << generation << " s, background removed in "
               << removal << " s; object points kept " << j["object_points_kept"].dump() << ", background kept "

@@ -3,6 +3,7 @@
 
 // shape_analysis points scene --points N --seed S --output scene.ply --objects objects.json
 // shape_analysis points background IN (.ply, .xyz, .las, .bin) --output OUT.ply --report R.json
+// shape_analysis points locate IN --output LOCATIONS.json [--truth OBJECTS.json] --report R.json
 //
 // The project's ground truth for point-cloud object recognition: a procedural street (road,
 // curbs, sloped ground, buildings, trees, objects of the thesis' classes in clutter) scanned by a
@@ -13,10 +14,13 @@
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO/PLY.h>
 #include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
+#include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/read_point_set.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
 
+#include <fstream>
 #include <iomanip>
+#include <regex>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -243,11 +247,119 @@ int run_background(const Background_options& o)
   return 0;
 }
 
+struct Locate_options
+{
+  std::string input, output, truth, report;
+  double spacing = 0.3, tallest = 12, radius = 1;
+  std::size_t minimum = 20;
+  bool quiet = false, verbose = false;
+};
+
+// The (x, y) of the objects of a ground-truth file written by `points scene`.
+std::vector<std::array<double, 2>> read_truth(const std::string& path)
+{
+  std::ifstream in(path);
+  if(!in)
+    throw Cli_error("cannot open " + path);
+  std::stringstream text;
+  text << in.rdbuf();
+  // Every "location": [x, y, ...] of the file (the objects of `points scene --objects`).
+  std::vector<std::array<double, 2>> truth;
+  const std::string content = text.str();
+  const std::regex location("\"location\"\\s*:\\s*\\[\\s*([-+0-9.eE]+)\\s*,\\s*([-+0-9.eE]+)");
+  for(auto it = std::sregex_iterator(content.begin(), content.end(), location); it != std::sregex_iterator(); ++it) {
+    try {
+      truth.push_back({std::stod((*it)[1].str()), std::stod((*it)[2].str())});
+    } catch(const std::exception&) {
+      throw Cli_error(path + ": a location is not a number");
+    }
+  }
+  if(truth.empty() && content.find_first_not_of(" \t\r\n[]") != std::string::npos)
+    throw Cli_error(path + ": no \"location\": [x, y, ...] in it (write it with 'points scene --objects')");
+  return truth;
+}
+
+int run_locate(const Locate_options& o)
+{
+  Stopwatch total;
+  Progress progress("points locate", o.quiet, o.verbose);
+  Output_files outputs;
+  outputs.add_input(o.input);
+  if(!o.truth.empty())
+    outputs.add_input(o.truth);
+  require_extension(o.output, ".json", "locations");
+  outputs.add_output(o.output, "locations");
+  outputs.add_optional_output(o.report, "report");
+  if(!(o.radius > 0))
+    throw Usage_error("--radius must be positive");
+
+  progress.stage("reading " + o.input);
+  Stopwatch reading;
+  CGAL::Point_set_3<Point_3> points;
+  // The locations are compared with the truth in the file's frame: no shift.
+  const PSOR::Point_set_read_result read =
+    PSOR::read_point_set(o.input, points, PSOR::parameters::shift_to_local_origin(false));
+  const double read_seconds = reading.seconds();
+  const std::vector<std::array<double, 2>> truth = o.truth.empty() ? std::vector<std::array<double, 2>>()
+                                                                   : read_truth(o.truth);
+  progress.stage("locating objects among " + std::to_string(points.size()) + " points");
+  Stopwatch work;
+  const PSOR::Localization_result r = PSOR::locate_objects(
+    points, PSOR::parameters::component_spacing(o.spacing).minimum_cluster_size(o.minimum).maximum_cluster_height(o.tallest));
+  const double seconds = work.seconds();
+  Json list = Json::array();
+  for(const PSOR::Object_location& l : r.locations) {
+    Json j = Json::object();
+    j["location"] = Json(std::vector<double>{l.position[0], l.position[1], l.position[2]});
+    j["points"] = l.number_of_points;
+    j["height"] = l.height;
+    list.push_back(j);
+  }
+  outputs.stage(o.output, false, [&](std::ostream& out) { out << list.dump() << "\n"; });
+  PSOR::Localization_evaluation e;
+  if(!truth.empty())
+    e = PSOR::evaluate_locations(r.locations, truth, o.radius);
+  if(!o.report.empty()) {
+    Json report = Json::object();
+    report["command"] = "points locate";
+    report["input"] = o.input;
+    report["format"] = read.format;
+    report["number_of_points"] = points.size();
+    Json parameters = Json::object();
+    parameters["method"] = "connected components";
+    parameters["component_spacing"] = o.spacing;
+    parameters["minimum_cluster_size"] = o.minimum;
+    parameters["maximum_cluster_height"] = o.tallest;
+    report["parameters"] = parameters;
+    report["clusters"] = r.number_of_clusters;
+    report["locations"] = r.locations.size();
+    if(!truth.empty()) {
+      Json ev = Json::object();
+      ev["radius"] = o.radius;
+      ev["objects"] = truth.size();
+      ev["correct_locations"] = e.correct_locations;
+      ev["found_objects"] = e.found_objects;
+      ev["precision"] = e.precision;
+      ev["recall"] = e.recall;
+      report["evaluation"] = ev;
+    }
+    stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(), {{"locations", o.output}});
+  }
+  outputs.commit();
+  progress.done();
+  std::cout << o.input << ": " << r.locations.size() << " locations among " << points.size() << " points";
+  if(!truth.empty())
+    std::cout << "; precision " << e.precision << ", recall " << e.recall << " (" << truth.size() << " objects, "
+              << o.radius << " m)";
+  std::cout << "\n";
+  return 0;
+}
+
 } // namespace
 
 void add_points_command(CLI::App& app, std::function<int()>& run)
 {
-  CLI::App* points = app.add_subcommand("points", "Point clouds: scanned urban scenes, background removal.");
+  CLI::App* points = app.add_subcommand("points", "Point clouds: scanned urban scenes, background removal, localization.");
   points->require_subcommand(1);
 
   auto s = std::make_shared<Scene_options>();
@@ -295,6 +407,23 @@ void add_points_command(CLI::App& app, std::function<int()>& run)
   background->add_flag("-q,--quiet", b->quiet, "No progress on stderr");
   background->add_flag("-v,--verbose", b->verbose, "Progress on stderr even when it is not a terminal");
   background->callback([b, &run]() { run = [b]() { return run_background(*b); }; });
+
+  auto l = std::make_shared<Locate_options>();
+  CLI::App* locate = points->add_subcommand(
+    "locate", "Locate potential objects among foreground points (the output of 'points background') by "
+              "connected components; with --truth, precision and recall of the locations.");
+  locate->add_option("input", l->input, "The foreground points (.ply, .xyz, .las, .bin)")->required();
+  locate->add_option("-o,--output", l->output, "The locations (.json: location [x, y, z], points, height)")
+    ->required();
+  locate->add_option("--truth", l->truth, "True objects (.json, as written by 'points scene --objects')");
+  locate->add_option("--report", l->report, "JSON report (counts, precision and recall, seconds)");
+  locate->add_option("--spacing", l->spacing, "Side of the voxels whose contact makes clusters (m)")->capture_default_str();
+  locate->add_option("--min-points", l->minimum, "Smaller clusters are rejected")->capture_default_str();
+  locate->add_option("--max-height", l->tallest, "Taller clusters are rejected (m)")->capture_default_str();
+  locate->add_option("--radius", l->radius, "Largest horizontal distance of a correct location (m)")->capture_default_str();
+  locate->add_flag("-q,--quiet", l->quiet, "No progress on stderr");
+  locate->add_flag("-v,--verbose", l->verbose, "Progress on stderr even when it is not a terminal");
+  locate->callback([l, &run]() { run = [l]() { return run_locate(*l); }; });
 }
 
 } // namespace shape_analysis_cli

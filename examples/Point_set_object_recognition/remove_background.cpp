@@ -1,8 +1,8 @@
 // Copyright (c) 2026 CGAL Global Shape Analysis contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-// Removes the ground, the isolated points and the buildings of a LIDAR scan and writes what is
-// left (the candidate small objects) to a PLY file.
+// Removes the ground, the isolated points and the buildings of a LIDAR scan, writes what is left
+// (the candidate small objects) to a PLY file and locates the objects among those points.
 //
 //   remove_background [scan.ply] [foreground.ply]     (default: CGAL's b9_training.ply)
 
@@ -10,6 +10,7 @@
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO/PLY.h>
 
+#include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
 
 #include <fstream>
@@ -40,6 +41,12 @@ int main(int argc, char** argv)
     Point_set kept;
     for(std::size_t i : r.foreground)
       kept.insert(points.point(*(points.begin() + std::ptrdiff_t(i))));
+    const PSOR::Localization_result l = PSOR::locate_objects(kept, PSOR::parameters::component_spacing(1.0));
+    std::cout << l.locations.size() << " potential objects";
+    for(std::size_t k = 0; k < l.locations.size() && k < 5; ++k)
+      std::cout << (k ? ", " : ": ") << "(" << l.locations[k].position[0] << ", " << l.locations[k].position[1]
+                << ") " << l.locations[k].number_of_points << " points";
+    std::cout << (l.locations.size() > 5 ? ", ...\n" : "\n");
     std::ofstream out(output, std::ios::binary);
     CGAL::IO::set_mode(out, CGAL::IO::BINARY);
     if(!CGAL::IO::write_PLY(out, kept)) {

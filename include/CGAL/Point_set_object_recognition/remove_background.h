@@ -13,7 +13,7 @@
 
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/parameters.h>
-#include <CGAL/Shape_analysis/internal/Union_find.h>
+#include <CGAL/Point_set_object_recognition/internal/Voxel_grid.h>
 
 #include <algorithm>
 #include <array>
@@ -96,23 +96,6 @@ struct Background_options
   std::size_t neighbors = 3;
 };
 
-// Integer voxel key of a point for a grid of side `s`.
-inline std::uint64_t voxel_key(double x, double y, double z, double s, const std::array<double, 3>& lo)
-{
-  const std::uint64_t i = std::uint64_t((x - lo[0]) / s), j = std::uint64_t((y - lo[1]) / s),
-                      k = std::uint64_t((z - lo[2]) / s);
-  return (i & 0x1FFFFF) | ((j & 0x1FFFFF) << 21) | ((k & 0x1FFFFF) << 42);
-}
-
-inline std::uint64_t voxel_neighbor(std::uint64_t key, int di, int dj, int dk)
-{
-  const long i = long(key & 0x1FFFFF) + di, j = long((key >> 21) & 0x1FFFFF) + dj,
-             k = long((key >> 42) & 0x1FFFFF) + dk;
-  if(i < 0 || j < 0 || k < 0)
-    return std::numeric_limits<std::uint64_t>::max();
-  return std::uint64_t(i) | (std::uint64_t(j) << 21) | (std::uint64_t(k) << 42);
-}
-
 // Least-squares plane z = a x + b y + c through the points `idx` (coordinates relative to
 // (cx, cy)); false when they do not determine one, or do not spread over the cell in both x and
 // y (standard deviation under `spread`: the foot of a wall, a lone object).
@@ -155,18 +138,8 @@ inline Background_removal_result remove_background(const std::vector<std::array<
   r.height_above_ground.assign(n, 0.0);
   if(n == 0)
     return r;
-  std::array<double, 3> lo{{p[0][0], p[0][1], p[0][2]}}, hi = lo;
-  for(const auto& q : p)
-    for(int c = 0; c < 3; ++c) {
-      if(!std::isfinite(q[std::size_t(c)]))
-        throw Bad_input("remove_background: a point coordinate is not a finite number");
-      lo[std::size_t(c)] = (std::min)(lo[std::size_t(c)], q[std::size_t(c)]);
-      hi[std::size_t(c)] = (std::max)(hi[std::size_t(c)], q[std::size_t(c)]);
-    }
-  for(int c = 0; c < 3; ++c)
-    if((hi[std::size_t(c)] - lo[std::size_t(c)]) / (std::min)(o.cell, (std::min)(o.isolation, o.spacing)) > 2.0e6)
-      throw Bad_input("remove_background: the scene is too large for the grid sizes (more than "
-                      "two million cells along an axis); process it in tiles");
+  std::array<double, 3> lo, hi;
+  checked_bounds(p, (std::min)(o.cell, (std::min)(o.isolation, o.spacing)), "remove_background", lo, hi);
 
   // 1. The ground: per cell, a plane started at the cell's low points and refitted to the
   //    points near it, with a shrinking band.
@@ -325,40 +298,25 @@ inline Background_removal_result remove_background(const std::vector<std::array<
 
   // 3. Connected components of the remaining points (occupied voxels of side
   //    `component_spacing`, 26-connected); the ones wider than `maximum_component_extent` go.
-  std::unordered_map<std::uint64_t, std::uint32_t> voxel;
-  std::vector<std::uint64_t> keys;
+  std::vector<char> remaining(n, 0);
   for(std::size_t i = 0; i < n; ++i)
-    if(r.kind[i] == Point_kind::FOREGROUND) {
-      const std::uint64_t k = voxel_key(p[i][0], p[i][1], p[i][2], o.spacing, lo);
-      if(voxel.emplace(k, std::uint32_t(keys.size())).second)
-        keys.push_back(k);
-    }
-  CGAL::Shape_analysis::internal::Union_find uf(keys.size());
-  for(std::size_t v = 0; v < keys.size(); ++v)
-    for(int dk = -1; dk <= 1; ++dk)
-      for(int dj = -1; dj <= 1; ++dj)
-        for(int di = -1; di <= 1; ++di) {
-          const auto it = voxel.find(voxel_neighbor(keys[v], di, dj, dk));
-          if(it != voxel.end())
-            uf.unite(std::uint32_t(v), it->second);
-        }
-  std::vector<std::array<double, 4>> box(keys.size(), {std::numeric_limits<double>::infinity(),
-                                                       std::numeric_limits<double>::infinity(),
-                                                       -std::numeric_limits<double>::infinity(),
-                                                       -std::numeric_limits<double>::infinity()});
-  std::vector<std::uint32_t> root_of_point(n, 0);
+    remaining[i] = r.kind[i] == Point_kind::FOREGROUND;
+  std::size_t components = 0;
+  const std::vector<std::uint32_t> component = voxel_components(p, remaining, o.spacing, lo, components);
+  std::vector<std::array<double, 4>> box(components, {std::numeric_limits<double>::infinity(),
+                                                      std::numeric_limits<double>::infinity(),
+                                                      -std::numeric_limits<double>::infinity(),
+                                                      -std::numeric_limits<double>::infinity()});
   for(std::size_t i = 0; i < n; ++i)
-    if(r.kind[i] == Point_kind::FOREGROUND) {
-      const std::uint32_t root = uf.find(voxel[voxel_key(p[i][0], p[i][1], p[i][2], o.spacing, lo)]);
-      root_of_point[i] = root;
-      auto& b = box[root];
+    if(remaining[i]) {
+      auto& b = box[component[i]];
       b[0] = (std::min)(b[0], p[i][0]), b[1] = (std::min)(b[1], p[i][1]);
       b[2] = (std::max)(b[2], p[i][0]), b[3] = (std::max)(b[3], p[i][1]);
     }
   for(std::size_t i = 0; i < n; ++i) {
-    if(r.kind[i] != Point_kind::FOREGROUND)
+    if(!remaining[i])
       continue;
-    const auto& b = box[root_of_point[i]];
+    const auto& b = box[component[i]];
     if(std::hypot(b[2] - b[0], b[3] - b[1]) > o.extent) {
       r.kind[i] = Point_kind::LARGE_COMPONENT;
       ++r.number_of_large_component_points;
@@ -479,13 +437,7 @@ Background_removal_result remove_background(const PointRange& points,
     throw Bad_input("remove_background: component_spacing must be a positive number");
   if(!positive(o.extent))
     throw Bad_input("remove_background: maximum_component_extent must be a positive number");
-  std::vector<std::array<double, 3>> p;
-  p.reserve(std::size_t(std::distance(std::begin(points), std::end(points))));
-  for(const auto& v : points) {
-    const auto& q = get(point_map, v);
-    p.push_back({CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())});
-  }
-  return internal::remove_background(p, o);
+  return internal::remove_background(internal::point_arrays(points, point_map), o);
 }
 
 /*!
@@ -502,11 +454,7 @@ template <typename Point, typename Vector, typename NamedParameters = parameters
 Background_removal_result remove_background(const CGAL::Point_set_3<Point, Vector>& point_set,
                                             const NamedParameters& np = parameters::default_values())
 {
-  std::vector<Point> points;
-  points.reserve(point_set.size());
-  for(auto i : point_set)
-    points.push_back(point_set.point(i));
-  return remove_background(points, np);
+  return remove_background(internal::points_of(point_set), np);
 }
 
 } // namespace Point_set_object_recognition

@@ -73,6 +73,8 @@ namespace internal_np {
   X(minimum_neighbors_t, minimum_neighbors_tag, minimum_neighbors)                   \
   X(component_spacing_t, component_spacing_tag, component_spacing)                   \
   X(maximum_component_extent_t, maximum_component_extent_tag, maximum_component_extent) \
+  X(minimum_cluster_size_t, minimum_cluster_size_tag, minimum_cluster_size)          \
+  X(maximum_cluster_height_t, maximum_cluster_height_tag, maximum_cluster_height)    \
   X(local_origin_t, local_origin_tag, local_origin)                                  \
   X(shift_to_local_origin_t, shift_to_local_origin_tag, shift_to_local_origin)
 

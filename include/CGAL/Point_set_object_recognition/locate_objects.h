@@ -1,0 +1,255 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_POINT_SET_OBJECT_RECOGNITION_LOCATE_OBJECTS_H
+#define CGAL_POINT_SET_OBJECT_RECOGNITION_LOCATE_OBJECTS_H
+
+/// \file locate_objects.h
+/// Localization of small objects among the foreground points of a scan, and its evaluation
+/// against known locations.
+
+#include <CGAL/Point_set_3.h>
+#include <CGAL/property_map.h>
+
+#include <CGAL/Point_set_object_recognition/internal/Voxel_grid.h>
+#include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/parameters.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <tuple>
+#include <vector>
+
+namespace CGAL {
+namespace Point_set_object_recognition {
+
+namespace parameters = CGAL::Shape_analysis::parameters;
+using CGAL::Shape_analysis::Bad_input;
+
+/// \ingroup PkgPointSetObjectRecognitionRef
+/// A potential object found by `locate_objects()`.
+struct Object_location
+{
+  std::array<double, 3> position{{0, 0, 0}}; ///< the mean \f$(x, y)\f$ of its points and their lowest \f$z\f$
+  std::size_t number_of_points = 0;           ///< the points of its cluster
+  double height = 0;                          ///< the vertical extent of its cluster
+};
+
+/// \ingroup PkgPointSetObjectRecognitionRef
+/// The result of `locate_objects()`.
+struct Localization_result
+{
+  std::vector<Object_location> locations; ///< sorted by \f$x\f$, then \f$y\f$
+  /// Per point, the index of its location in `locations`, or `no_location` for a point of a
+  /// cluster that was rejected.
+  std::vector<std::size_t> location_of_point;
+  static constexpr std::size_t no_location = std::size_t(-1); ///< see `location_of_point`
+  std::size_t number_of_clusters = 0;      ///< before the rejection of too small and too high ones
+};
+
+/// \ingroup PkgPointSetObjectRecognitionRef
+/// Precision and recall of locations against the true ones (`evaluate_locations()`).
+struct Localization_evaluation
+{
+  std::size_t correct_locations = 0; ///< locations within the radius of a true object
+  std::size_t found_objects = 0;     ///< true objects within the radius of a location
+  std::size_t number_of_locations = 0;
+  std::size_t number_of_objects = 0;
+  double precision = 0; ///< correct locations / locations (1 when there is none)
+  double recall = 0;    ///< found objects / objects (1 when there is none)
+};
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+
+Locates potential objects among the foreground points of a scan (what `remove_background()`
+keeps) by connected components (\cgalCite{Golovinskiy2010}, section 4.3.3): the points are
+grouped by touching voxels of side `component_spacing`; clusters of fewer than
+`minimum_cluster_size` points (debris, remains of the ground) and clusters taller than
+`maximum_cluster_height` (remains of buildings, tall trees) are rejected; each other cluster gives
+one location, the mean \f$(x, y)\f$ of its points at the height of its lowest point. Objects that
+touch each other come out as one location, which the segmentation step separates.
+
+\tparam PointRange a model of `ConstRange`
+\tparam NamedParameters a sequence of named parameters
+
+\param points the foreground points (metres, \f$z\f$ up)
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{point_map}
+    \cgalParamDescription{a property map associating points to the elements of `points`}
+    \cgalParamType{a model of `ReadablePropertyMap` whose value type is a point of a \cgal kernel}
+    \cgalParamDefault{`CGAL::Identity_property_map`}
+  \cgalParamNEnd
+  \cgalParamNBegin{component_spacing}
+    \cgalParamDescription{the side of the voxels whose contact makes clusters, in metres}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0.3`}
+    \cgalParamExtra{must be positive}
+  \cgalParamNEnd
+  \cgalParamNBegin{minimum_cluster_size}
+    \cgalParamDescription{clusters with fewer points are rejected}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`20`}
+  \cgalParamNEnd
+  \cgalParamNBegin{maximum_cluster_height}
+    \cgalParamDescription{clusters with a larger vertical extent are rejected, in metres}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`12`}
+    \cgalParamExtra{must be positive}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the locations (sorted by \f$x\f$, then \f$y\f$) and the location of every point
+
+\throws CGAL::Shape_analysis::Bad_input if a coordinate is not finite, a parameter is out of its
+        range, or the points spread over more than two million voxels along an axis
+*/
+template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+Localization_result locate_objects(const PointRange& points, const NamedParameters& np = parameters::default_values())
+{
+  namespace SAI = CGAL::Shape_analysis::internal;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename std::iterator_traits<typename PointRange::const_iterator>::value_type Value;
+  const auto point_map =
+    choose_parameter(get_parameter(np, CGAL::internal_np::point_map), CGAL::Identity_property_map<Value>());
+  const double spacing = SAI::parameter_value<double>(np, snp::component_spacing_tag, 0.3);
+  const std::size_t minimum = SAI::parameter_value<std::size_t>(np, snp::minimum_cluster_size_tag, std::size_t(20));
+  const double tallest = SAI::parameter_value<double>(np, snp::maximum_cluster_height_tag, 12.0);
+  if(!(spacing > 0) || !std::isfinite(spacing))
+    throw Bad_input("locate_objects: component_spacing must be a positive number");
+  if(!(tallest > 0) || !std::isfinite(tallest))
+    throw Bad_input("locate_objects: maximum_cluster_height must be a positive number");
+
+  const std::vector<std::array<double, 3>> p = internal::point_arrays(points, point_map);
+  Localization_result r;
+  r.location_of_point.assign(p.size(), Localization_result::no_location);
+  if(p.empty())
+    return r;
+  std::array<double, 3> lo, hi;
+  internal::checked_bounds(p, spacing, "locate_objects", lo, hi);
+  const std::vector<char> all(p.size(), 1);
+  std::size_t clusters = 0;
+  const std::vector<std::uint32_t> cluster = internal::voxel_components(p, all, spacing, lo, clusters);
+  r.number_of_clusters = clusters;
+  // Per cluster: count, sum of x and y, lowest and highest z.
+  std::vector<std::size_t> count(clusters, 0);
+  std::vector<std::array<double, 4>> acc(clusters, {0, 0, std::numeric_limits<double>::infinity(),
+                                                    -std::numeric_limits<double>::infinity()});
+  for(std::size_t i = 0; i < p.size(); ++i) {
+    auto& a = acc[cluster[i]];
+    ++count[cluster[i]];
+    a[0] += p[i][0], a[1] += p[i][1];
+    a[2] = (std::min)(a[2], p[i][2]), a[3] = (std::max)(a[3], p[i][2]);
+  }
+  std::vector<std::pair<Object_location, std::size_t>> kept; // with its cluster
+  for(std::size_t c = 0; c < clusters; ++c) {
+    const double height = acc[c][3] - acc[c][2];
+    if(count[c] < minimum || height > tallest)
+      continue;
+    Object_location l;
+    l.position = {acc[c][0] / double(count[c]), acc[c][1] / double(count[c]), acc[c][2]};
+    l.number_of_points = count[c];
+    l.height = height;
+    kept.emplace_back(l, c);
+  }
+  std::sort(kept.begin(), kept.end(), [](const auto& a, const auto& b) {
+    return std::tie(a.first.position[0], a.first.position[1]) < std::tie(b.first.position[0], b.first.position[1]);
+  });
+  std::vector<std::size_t> location_of_cluster(clusters, Localization_result::no_location);
+  for(std::size_t k = 0; k < kept.size(); ++k) {
+    r.locations.push_back(kept[k].first);
+    location_of_cluster[kept[k].second] = k;
+  }
+  for(std::size_t i = 0; i < p.size(); ++i)
+    r.location_of_point[i] = location_of_cluster[cluster[i]];
+  return r;
+}
+
+/// \ingroup PkgPointSetObjectRecognitionRef
+/// `locate_objects()` of the points of a `CGAL::Point_set_3` (its point map).
+/// \tparam Point the point type of the point set
+/// \tparam Vector the normal type of the point set
+/// \tparam NamedParameters a sequence of named parameters
+/// \param point_set the foreground points
+/// \param np the same named parameters as the other overload, but `point_map`
+/// \returns as the other overload; point indices follow the point set's iteration order
+template <typename Point, typename Vector, typename NamedParameters = parameters::Default_named_parameters>
+Localization_result locate_objects(const CGAL::Point_set_3<Point, Vector>& point_set,
+                                   const NamedParameters& np = parameters::default_values())
+{
+  return locate_objects(internal::points_of(point_set), np);
+}
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+
+Evaluates locations against the true locations of the objects in the horizontal plane, as in
+\cgalCite{Golovinskiy2010} (section 4.4.1): a location is correct when a true object lies within
+`radius` of it, and an object is found when a location lies within `radius` of it. Precision is
+the fraction of the locations that are correct, recall the fraction of the objects found.
+
+\tparam LocationRange a range of `Object_location`
+\tparam TruthRange a range of `std::array<double, 2>` or `std::array<double, 3>` (\f$x, y\f$ first)
+
+\param locations the locations found
+\param objects the true locations
+\param radius the largest horizontal distance of a match, in metres (the thesis: 1 m)
+
+\returns the counts, precision and recall
+
+\throws CGAL::Shape_analysis::Bad_input if `radius` is not positive or a coordinate is not finite
+*/
+template <typename LocationRange, typename TruthRange>
+Localization_evaluation evaluate_locations(const LocationRange& locations, const TruthRange& objects,
+                                           double radius = 1.0)
+{
+  if(!(radius > 0) || !std::isfinite(radius))
+    throw Bad_input("evaluate_locations: radius must be a positive number");
+  std::vector<std::array<double, 2>> a, b;
+  for(const Object_location& l : locations)
+    a.push_back({l.position[0], l.position[1]});
+  for(const auto& o : objects)
+    b.push_back({double(o[0]), double(o[1])});
+  for(const auto& q : a)
+    if(!std::isfinite(q[0]) || !std::isfinite(q[1]))
+      throw Bad_input("evaluate_locations: a location is not finite");
+  for(const auto& q : b)
+    if(!std::isfinite(q[0]) || !std::isfinite(q[1]))
+      throw Bad_input("evaluate_locations: an object location is not finite");
+  // Objects sorted by x; for each location, the objects within the radius.
+  std::vector<std::size_t> order(b.size());
+  for(std::size_t j = 0; j < b.size(); ++j)
+    order[j] = j;
+  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return b[x][0] < b[y][0]; });
+  std::vector<char> found(b.size(), 0);
+  Localization_evaluation e;
+  for(std::size_t i = 0; i < a.size(); ++i) {
+    bool correct = false;
+    auto first = std::lower_bound(order.begin(), order.end(), a[i][0] - radius,
+                                  [&](std::size_t j, double x) { return b[j][0] < x; });
+    for(auto it = first; it != order.end() && b[*it][0] <= a[i][0] + radius; ++it)
+      if(std::hypot(a[i][0] - b[*it][0], a[i][1] - b[*it][1]) <= radius) {
+        correct = true;
+        found[*it] = 1;
+      }
+    e.correct_locations += correct ? 1 : 0;
+  }
+  for(char f : found)
+    e.found_objects += f ? 1 : 0;
+  e.number_of_locations = a.size();
+  e.number_of_objects = b.size();
+  e.precision = a.empty() ? 1.0 : double(e.correct_locations) / double(a.size());
+  e.recall = b.empty() ? 1.0 : double(e.found_objects) / double(b.size());
+  return e;
+}
+
+} // namespace Point_set_object_recognition
+} // namespace CGAL
+
+#endif // CGAL_POINT_SET_OBJECT_RECOGNITION_LOCATE_OBJECTS_H
