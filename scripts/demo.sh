@@ -59,11 +59,14 @@ segment blobby_3cc 3
 
 # Point clouds (Point_set_object_recognition): a street of 400 m scanned by a simulated mobile
 # LIDAR (colours by class, the objects' ground truth in JSON), its background removed (ground,
-# isolated points, buildings), and the background of CGAL's airborne scan b9_training.ply.
+# isolated points, buildings), its objects located and checked against the truth, and the
+# background of CGAL's airborne scan b9_training.ply.
 "$tool" points scene --points 1000000 --length 400 --output "$out/street_scan.ply" \
   --objects "$out/street_objects.json" --report "$out/street_scan.json" --verbose
 "$tool" points background "$out/street_scan.ply" --output "$out/street_foreground.ply" \
   --report "$out/street_foreground.json" --verbose
+"$tool" points locate "$out/street_foreground.ply" --truth "$out/street_objects.json" \
+  --output "$out/street_locations.json" --report "$out/street_locations_report.json" --verbose
 "$tool" points background "$data/b9_training.ply" --max-extent 6 --spacing 1 --isolation-radius 1 \
   --output "$out/b9_foreground.ply" --report "$out/b9_foreground.json" --verbose
 
