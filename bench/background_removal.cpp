@@ -134,22 +134,30 @@ int main(int argc, char** argv)
       std::vector<Point> foreground;
       for(std::size_t i : r.foreground)
         foreground.push_back(points[i]);
-      const auto t2 = std::chrono::steady_clock::now();
-      const PSOR::Localization_result l = PSOR::locate_objects(foreground);
-      const double seconds = seconds_since(t2);
       std::vector<std::array<double, 2>> truth;
       for(const auto& b : scene.objects)
         truth.push_back({b.x, b.y});
-      const PSOR::Localization_evaluation e = PSOR::evaluate_locations(l.locations, truth, 1.0);
-      Json jl = Json::object();
-      jl["method"] = "connected components";
-      jl["seconds"] = seconds;
-      jl["locations"] = l.locations.size();
-      jl["precision"] = e.precision;
-      jl["recall"] = e.recall;
-      j["localization"] = jl;
-      std::cerr << "  localization: " << l.locations.size() << " locations in " << seconds << " s, precision "
-                << e.precision << ", recall " << e.recall << " (" << scene.objects.size() << " objects)\n";
+      Json methods = Json::array();
+      for(const auto method : {PSOR::Localization_method::CONNECTED_COMPONENTS, PSOR::Localization_method::MEAN_SHIFT}) {
+        const std::string name = method == PSOR::Localization_method::MEAN_SHIFT ? "mean shift (2 m)"
+                                                                                 : "connected components (0.3 m)";
+        const auto t2 = std::chrono::steady_clock::now();
+        const PSOR::Localization_result l =
+          PSOR::locate_objects(foreground, PSOR::parameters::localization_method(method));
+        const double seconds = seconds_since(t2);
+        const PSOR::Localization_evaluation e = PSOR::evaluate_locations(l.locations, truth, 1.0);
+        Json jl = Json::object();
+        jl["method"] = name;
+        jl["seconds"] = seconds;
+        jl["locations"] = l.locations.size();
+        jl["precision"] = e.precision;
+        jl["recall"] = e.recall;
+        methods.push_back(jl);
+        std::cerr << "  localization, " << name << ": " << l.locations.size() << " locations in " << seconds
+                  << " s, precision " << e.precision << ", recall " << e.recall << " (" << scene.objects.size()
+                  << " objects)\n";
+      }
+      j["localization"] = methods;
     }
     runs.push_back(j);
     std::cerr << "  " << scan.points.size() << " points: generated in " << generation << " s, background removed in "

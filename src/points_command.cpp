@@ -249,8 +249,8 @@ int run_background(const Background_options& o)
 
 struct Locate_options
 {
-  std::string input, output, truth, report;
-  double spacing = 0.3, tallest = 12, radius = 1;
+  std::string input, output, truth, report, method = "components";
+  double spacing = 0.3, tallest = 12, radius = 1, shift_radius = 2;
   std::size_t minimum = 20;
   bool quiet = false, verbose = false;
 };
@@ -304,8 +304,14 @@ int run_locate(const Locate_options& o)
                                                                    : read_truth(o.truth);
   progress.stage("locating objects among " + std::to_string(points.size()) + " points");
   Stopwatch work;
+  const PSOR::Localization_method method =
+    o.method == "mean-shift" ? PSOR::Localization_method::MEAN_SHIFT : PSOR::Localization_method::CONNECTED_COMPONENTS;
   const PSOR::Localization_result r = PSOR::locate_objects(
-    points, PSOR::parameters::component_spacing(o.spacing).minimum_cluster_size(o.minimum).maximum_cluster_height(o.tallest));
+    points, PSOR::parameters::localization_method(method)
+              .mean_shift_radius(o.shift_radius)
+              .component_spacing(o.spacing)
+              .minimum_cluster_size(o.minimum)
+              .maximum_cluster_height(o.tallest));
   const double seconds = work.seconds();
   Json list = Json::array();
   for(const PSOR::Object_location& l : r.locations) {
@@ -326,7 +332,8 @@ int run_locate(const Locate_options& o)
     report["format"] = read.format;
     report["number_of_points"] = points.size();
     Json parameters = Json::object();
-    parameters["method"] = "connected components";
+    parameters["method"] = o.method;
+    parameters["mean_shift_radius"] = o.shift_radius;
     parameters["component_spacing"] = o.spacing;
     parameters["minimum_cluster_size"] = o.minimum;
     parameters["maximum_cluster_height"] = o.tallest;
@@ -411,12 +418,16 @@ void add_points_command(CLI::App& app, std::function<int()>& run)
   auto l = std::make_shared<Locate_options>();
   CLI::App* locate = points->add_subcommand(
     "locate", "Locate potential objects among foreground points (the output of 'points background') by "
-              "connected components; with --truth, precision and recall of the locations.");
+              "connected components or mean shift; with --truth, precision and recall of the locations.");
   locate->add_option("input", l->input, "The foreground points (.ply, .xyz, .las, .bin)")->required();
   locate->add_option("-o,--output", l->output, "The locations (.json: location [x, y, z], points, height)")
     ->required();
   locate->add_option("--truth", l->truth, "True objects (.json, as written by 'points scene --objects')");
   locate->add_option("--report", l->report, "JSON report (counts, precision and recall, seconds)");
+  locate->add_option("--method", l->method, "components (connected voxels) or mean-shift (modes of the density)")
+    ->capture_default_str()
+    ->check(CLI::IsMember({"components", "mean-shift"}));
+  locate->add_option("--shift-radius", l->shift_radius, "Radius of the mean shift's kernel (m)")->capture_default_str();
   locate->add_option("--spacing", l->spacing, "Side of the voxels whose contact makes clusters (m)")->capture_default_str();
   locate->add_option("--min-points", l->minimum, "Smaller clusters are rejected")->capture_default_str();
   locate->add_option("--max-height", l->tallest, "Taller clusters are rejected (m)")->capture_default_str();

@@ -29,6 +29,13 @@ namespace parameters = CGAL::Shape_analysis::parameters;
 using CGAL::Shape_analysis::Bad_input;
 
 /// \ingroup PkgPointSetObjectRecognitionRef
+/// How `locate_objects()` groups the points into potential objects.
+enum class Localization_method {
+  CONNECTED_COMPONENTS, ///< touching voxels of side `component_spacing`
+  MEAN_SHIFT            ///< modes of the horizontal point density, flat kernel of `mean_shift_radius`
+};
+
+/// \ingroup PkgPointSetObjectRecognitionRef
 /// A potential object found by `locate_objects()`.
 struct Object_location
 {
@@ -65,12 +72,19 @@ struct Localization_evaluation
 \ingroup PkgPointSetObjectRecognitionRef
 
 Locates potential objects among the foreground points of a scan (what `remove_background()`
-keeps) by connected components (\cgalCite{Golovinskiy2010}, section 4.3.3): the points are
-grouped by touching voxels of side `component_spacing`; clusters of fewer than
-`minimum_cluster_size` points (debris, remains of the ground) and clusters taller than
-`maximum_cluster_height` (remains of buildings, tall trees) are rejected; each other cluster gives
-one location, the mean \f$(x, y)\f$ of its points at the height of its lowest point. Objects that
-touch each other come out as one location, which the segmentation step separates.
+keeps), in the manner of \cgalCite{Golovinskiy2010} (section 4.3.3). The points are grouped into
+clusters by the `localization_method`:
+- `Localization_method::CONNECTED_COMPONENTS`: touching voxels of side `component_spacing`
+  (by a face, an edge or a corner). Objects that touch each other give one cluster;
+- `Localization_method::MEAN_SHIFT`: every square of side `mean_shift_radius` / 2 holding points
+  starts at the mean of its points and climbs to a mode of the horizontal point density (mean of
+  the points within `mean_shift_radius`); squares whose modes are closer than half the radius
+  form one cluster. Nearby objects (a post beside a trash can) are merged, a long one (a car seen
+  in pieces) is kept whole.
+
+Clusters of fewer than `minimum_cluster_size` points (debris, remains of the ground) and clusters
+taller than `maximum_cluster_height` (remains of buildings, tall trees) are rejected; each other
+cluster gives one location, the mean \f$(x, y)\f$ of its points at the height of its lowest point.
 
 \tparam PointRange a model of `ConstRange`
 \tparam NamedParameters a sequence of named parameters
@@ -84,8 +98,19 @@ touch each other come out as one location, which the segmentation step separates
     \cgalParamType{a model of `ReadablePropertyMap` whose value type is a point of a \cgal kernel}
     \cgalParamDefault{`CGAL::Identity_property_map`}
   \cgalParamNEnd
+  \cgalParamNBegin{localization_method}
+    \cgalParamDescription{how the points are grouped}
+    \cgalParamType{`Localization_method`}
+    \cgalParamDefault{`Localization_method::CONNECTED_COMPONENTS`}
+  \cgalParamNEnd
+  \cgalParamNBegin{mean_shift_radius}
+    \cgalParamDescription{the radius of the flat kernel of the mean shift, in metres (the thesis: 2 m)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`2`}
+    \cgalParamExtra{must be positive}
+  \cgalParamNEnd
   \cgalParamNBegin{component_spacing}
-    \cgalParamDescription{the side of the voxels whose contact makes clusters, in metres}
+    \cgalParamDescription{the side of the voxels whose contact makes clusters (connected components), in metres}
     \cgalParamType{`double`}
     \cgalParamDefault{`0.3`}
     \cgalParamExtra{must be positive}
@@ -121,6 +146,11 @@ Localization_result locate_objects(const PointRange& points, const NamedParamete
   const double spacing = SAI::parameter_value<double>(np, snp::component_spacing_tag, 0.3);
   const std::size_t minimum = SAI::parameter_value<std::size_t>(np, snp::minimum_cluster_size_tag, std::size_t(20));
   const double tallest = SAI::parameter_value<double>(np, snp::maximum_cluster_height_tag, 12.0);
+  const Localization_method method = SAI::parameter_value<Localization_method>(
+    np, snp::localization_method_tag, Localization_method::CONNECTED_COMPONENTS);
+  const double shift_radius = SAI::parameter_value<double>(np, snp::mean_shift_radius_tag, 2.0);
+  if(!(shift_radius > 0) || !std::isfinite(shift_radius))
+    throw Bad_input("locate_objects: mean_shift_radius must be a positive number");
   if(!(spacing > 0) || !std::isfinite(spacing))
     throw Bad_input("locate_objects: component_spacing must be a positive number");
   if(!(tallest > 0) || !std::isfinite(tallest))
@@ -132,10 +162,12 @@ Localization_result locate_objects(const PointRange& points, const NamedParamete
   if(p.empty())
     return r;
   std::array<double, 3> lo, hi;
-  internal::checked_bounds(p, spacing, "locate_objects", lo, hi);
-  const std::vector<char> all(p.size(), 1);
+  const bool shift = method == Localization_method::MEAN_SHIFT;
+  internal::checked_bounds(p, shift ? shift_radius / 2 : spacing, "locate_objects", lo, hi);
   std::size_t clusters = 0;
-  const std::vector<std::uint32_t> cluster = internal::voxel_components(p, all, spacing, lo, clusters);
+  const std::vector<std::uint32_t> cluster =
+    shift ? internal::mean_shift_clusters(p, shift_radius, lo, clusters)
+          : internal::voxel_components(p, std::vector<char>(p.size(), 1), spacing, lo, clusters);
   r.number_of_clusters = clusters;
   // Per cluster: count, sum of x and y, lowest and highest z.
   std::vector<std::size_t> count(clusters, 0);

@@ -75,6 +75,8 @@ namespace internal_np {
   X(maximum_component_extent_t, maximum_component_extent_tag, maximum_component_extent) \
   X(minimum_cluster_size_t, minimum_cluster_size_tag, minimum_cluster_size)          \
   X(maximum_cluster_height_t, maximum_cluster_height_tag, maximum_cluster_height)    \
+  X(localization_method_t, localization_method_tag, localization_method)             \
+  X(mean_shift_radius_t, mean_shift_radius_tag, mean_shift_radius)                   \
   X(local_origin_t, local_origin_tag, local_origin)                                  \
   X(shift_to_local_origin_t, shift_to_local_origin_tag, shift_to_local_origin)
 

@@ -4,8 +4,9 @@
 #ifndef CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_VOXEL_GRID_H
 #define CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_VOXEL_GRID_H
 
-// Sparse voxel grids over point clouds: integer keys, neighbours, and connected components of
-// occupied voxels (26-connected), as used by background removal and localization.
+// Sparse voxel grids over point clouds: integer keys, neighbours, connected components of
+// occupied voxels (26-connected) and mean-shift clusters, as used by background removal and
+// localization.
 
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
@@ -130,6 +131,89 @@ inline std::vector<std::uint32_t> voxel_components(const std::vector<std::array<
         dense[root] = std::uint32_t(number_of_components++);
       result[i] = dense[root];
     }
+  return result;
+}
+
+// Clusters of points by mean shift in the horizontal plane with a flat kernel of `radius`: a seed
+// per occupied square of side radius / 2 (at the mean of its points) climbs to a mode of the
+// point density (the mean of the points within `radius` of it, until it moves less than 1% of the
+// radius or after 100 steps); seeds whose modes are closer than radius / 2 are merged. Per point
+// the cluster of its square, numbered 0, 1, ... by the order of the squares.
+inline std::vector<std::uint32_t> mean_shift_clusters(const std::vector<std::array<double, 3>>& p, double radius,
+                                                      const std::array<double, 3>& lo,
+                                                      std::size_t& number_of_clusters)
+{
+  const auto key2 = [&](double x, double y, double s) { return voxel_key(x, y, lo[2], s, lo); };
+  // Points by cell of side `radius` (for the neighbourhoods) and by square of side radius / 2.
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells;
+  std::unordered_map<std::uint64_t, std::uint32_t> square_index;
+  std::vector<std::uint64_t> squares;
+  std::vector<std::uint32_t> square_of_point(p.size());
+  for(std::size_t i = 0; i < p.size(); ++i) {
+    cells[key2(p[i][0], p[i][1], radius)].push_back(std::uint32_t(i));
+    const auto ins = square_index.emplace(key2(p[i][0], p[i][1], radius / 2), std::uint32_t(squares.size()));
+    if(ins.second)
+      squares.push_back(ins.first->first);
+    square_of_point[i] = ins.first->second;
+  }
+  std::vector<std::array<double, 3>> seed(squares.size(), {0, 0, 0}); // x, y, count
+  for(std::size_t i = 0; i < p.size(); ++i) {
+    auto& s = seed[square_of_point[i]];
+    s[0] += p[i][0], s[1] += p[i][1], s[2] += 1;
+  }
+  const double r2 = radius * radius;
+  std::vector<std::array<double, 2>> mode(squares.size());
+  for(std::size_t k = 0; k < squares.size(); ++k) {
+    double x = seed[k][0] / seed[k][2], y = seed[k][1] / seed[k][2];
+    for(int step = 0; step < 100; ++step) {
+      double sx = 0, sy = 0, n = 0;
+      const std::uint64_t c = key2(x, y, radius);
+      for(int dj = -1; dj <= 1; ++dj)
+        for(int di = -1; di <= 1; ++di) {
+          const auto it = cells.find(voxel_neighbor(c, di, dj, 0));
+          if(it == cells.end())
+            continue;
+          for(std::uint32_t i : it->second) {
+            const double dx = p[i][0] - x, dy = p[i][1] - y;
+            if(dx * dx + dy * dy <= r2)
+              sx += p[i][0], sy += p[i][1], n += 1;
+          }
+        }
+      if(n == 0)
+        break;
+      const double nx = sx / n, ny = sy / n;
+      const double moved = std::hypot(nx - x, ny - y);
+      x = nx, y = ny;
+      if(moved < 0.01 * radius)
+        break;
+    }
+    mode[k] = {x, y};
+  }
+  // Merge the modes closer than radius / 2 (squares of that side: neighbours checked).
+  CGAL::Shape_analysis::internal::Union_find uf(squares.size());
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> by_mode;
+  for(std::size_t k = 0; k < squares.size(); ++k)
+    by_mode[key2(mode[k][0], mode[k][1], radius / 2)].push_back(std::uint32_t(k));
+  for(std::size_t k = 0; k < squares.size(); ++k) {
+    const std::uint64_t c = key2(mode[k][0], mode[k][1], radius / 2);
+    for(int dj = -1; dj <= 1; ++dj)
+      for(int di = -1; di <= 1; ++di) {
+        const auto it = by_mode.find(voxel_neighbor(c, di, dj, 0));
+        if(it == by_mode.end())
+          continue;
+        for(std::uint32_t m : it->second)
+          if(std::hypot(mode[m][0] - mode[k][0], mode[m][1] - mode[k][1]) < radius / 2)
+            uf.unite(std::uint32_t(k), m);
+      }
+  }
+  std::vector<std::uint32_t> dense(squares.size(), no_component), result(p.size(), no_component);
+  number_of_clusters = 0;
+  for(std::size_t i = 0; i < p.size(); ++i) {
+    const std::uint32_t root = uf.find(square_of_point[i]);
+    if(dense[root] == no_component)
+      dense[root] = std::uint32_t(number_of_clusters++);
+    result[i] = dense[root];
+  }
   return result;
 }
 
