@@ -146,6 +146,13 @@ TEST(BackgroundRemoval, PointSetAndParameters)
     ps.insert(p);
   const auto a = PSOR::remove_background(ps), b = PSOR::remove_background(s.points);
   EXPECT_EQ(a.kind, b.kind);
+  // A point map: the points of (point, index) pairs.
+  std::vector<std::pair<Point, int>> pairs;
+  for(const Point& p : s.points)
+    pairs.emplace_back(p, 0);
+  const auto c = PSOR::remove_background(
+    pairs, PSOR::parameters::point_map(CGAL::First_of_pair_property_map<std::pair<Point, int>>()));
+  EXPECT_EQ(c.kind, b.kind);
   // A larger extent keeps more (the smaller buildings); a larger threshold takes more as ground.
   const auto wide = PSOR::remove_background(s.points, PSOR::parameters::maximum_component_extent(1000.0));
   EXPECT_LT(wide.number_of_large_component_points, b.number_of_large_component_points);

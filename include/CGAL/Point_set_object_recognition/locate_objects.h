@@ -138,11 +138,6 @@ Localization_result locate_objects(const PointRange& points, const NamedParamete
 {
   namespace SAI = CGAL::Shape_analysis::internal;
   namespace snp = CGAL::Shape_analysis::internal_np;
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename std::iterator_traits<typename PointRange::const_iterator>::value_type Value;
-  const auto point_map =
-    choose_parameter(get_parameter(np, CGAL::internal_np::point_map), CGAL::Identity_property_map<Value>());
   const double spacing = SAI::parameter_value<double>(np, snp::component_spacing_tag, 0.3);
   const std::size_t minimum = SAI::parameter_value<std::size_t>(np, snp::minimum_cluster_size_tag, std::size_t(20));
   const double tallest = SAI::parameter_value<double>(np, snp::maximum_cluster_height_tag, 12.0);
@@ -156,7 +151,7 @@ Localization_result locate_objects(const PointRange& points, const NamedParamete
   if(!(tallest > 0) || !std::isfinite(tallest))
     throw Bad_input("locate_objects: maximum_cluster_height must be a positive number");
 
-  const std::vector<std::array<double, 3>> p = internal::point_arrays(points, point_map);
+  const std::vector<std::array<double, 3>> p = internal::point_arrays(points, np);
   Localization_result r;
   r.location_of_point.assign(p.size(), Localization_result::no_location);
   if(p.empty())

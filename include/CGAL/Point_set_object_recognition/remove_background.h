@@ -414,11 +414,6 @@ Background_removal_result remove_background(const PointRange& points,
 {
   namespace SAI = CGAL::Shape_analysis::internal;
   namespace snp = CGAL::Shape_analysis::internal_np;
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename std::iterator_traits<typename PointRange::const_iterator>::value_type Value;
-  const auto point_map =
-    choose_parameter(get_parameter(np, CGAL::internal_np::point_map), CGAL::Identity_property_map<Value>());
   internal::Background_options o;
   o.cell = SAI::parameter_value<double>(np, snp::ground_cell_size_tag, 5.0);
   o.threshold = SAI::parameter_value<double>(np, snp::ground_threshold_tag, 0.2);
@@ -437,7 +432,7 @@ Background_removal_result remove_background(const PointRange& points,
     throw Bad_input("remove_background: component_spacing must be a positive number");
   if(!positive(o.extent))
     throw Bad_input("remove_background: maximum_component_extent must be a positive number");
-  return internal::remove_background(internal::point_arrays(points, point_map), o);
+  return internal::remove_background(internal::point_arrays(points, np), o);
 }
 
 /*!

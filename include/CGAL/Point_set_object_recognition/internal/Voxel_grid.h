@@ -12,6 +12,7 @@
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/internal/Union_find.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/property_map.h>
 
 #include <algorithm>
@@ -49,10 +50,14 @@ inline std::uint64_t voxel_neighbor(std::uint64_t key, int di, int dj, int dk)
   return std::uint64_t(i) | (std::uint64_t(j) << 21) | (std::uint64_t(k) << 42);
 }
 
-// The points of a range as double coordinates.
-template <typename PointRange, typename PointMap>
-std::vector<std::array<double, 3>> point_arrays(const PointRange& points, const PointMap& point_map)
+// The points of a range as double coordinates, through the `point_map` of the named parameters
+// `np` (the identity by default).
+template <typename PointRange, typename NamedParameters>
+std::vector<std::array<double, 3>> point_arrays(const PointRange& points, const NamedParameters& np)
 {
+  typedef typename std::iterator_traits<typename PointRange::const_iterator>::value_type Value;
+  const auto point_map = CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, CGAL::internal_np::point_map), CGAL::Identity_property_map<Value>());
   std::vector<std::array<double, 3>> p;
   p.reserve(std::size_t(std::distance(std::begin(points), std::end(points))));
   for(const auto& v : points) {
