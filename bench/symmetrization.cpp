@@ -17,8 +17,9 @@
 // Symmetry error: RMS over the vertices of the distance from a vertex's mirror image to the
 // surface, relative to the bounding-box diagonal. Distortion: RMS relative change of the edge
 // lengths ("distortion") and of the edge vectors ("edge_vector_distortion"). Each mesh is also
-// symmetrized with final_symmetry_weight = 10^4 ("final_weight_1e4": less asymmetry, more
-// distortion where the two sides have no matching vertices).
+// symmetrized without the isometric refinement ("no_refinement": target_symmetry_error 0), with
+// the default final_symmetry_weight and with 10^4 (less asymmetry, more distortion where the two
+// sides have no matching vertices).
 // JSON to stdout and to FILE; progress to stderr.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -99,20 +100,23 @@ Json run(const std::string& name, const Mesh& mesh, const Symmetry& symmetry, st
   b["distortion"] = naive_distortion;
   b["edge_vector_distortion"] = SYI::edge_vector_distortion(surface, surface.points, naive);
   j["naive_halfway"] = b;
-  {
-    // The same with a larger final symmetry weight (10^4): less asymmetry, more distortion.
+  // Without the isometric refinement (target 0), with the default and with a larger final
+  // symmetry weight (10^4: less asymmetry, more distortion).
+  for(const double weight : {100.0, 1e4}) {
     Mesh tight = mesh;
     const auto start = std::chrono::steady_clock::now();
-    const auto rt = SY::symmetrize(tight, std::vector<Symmetry>{symmetry},
-                                   SY::parameters::number_of_threads(threads).final_symmetry_weight(1e4));
+    const auto rt = SY::symmetrize(
+      tight, std::vector<Symmetry>{symmetry},
+      SY::parameters::number_of_threads(threads).final_symmetry_weight(weight).target_symmetry_error(0.0));
     Json t = Json::object();
-    t["final_symmetry_weight"] = 1e4;
+    t["final_symmetry_weight"] = weight;
+    t["target_symmetry_error"] = 0;
     t["seconds"] = seconds_since(start);
     t["symmetry_error_after"] = rt.symmetry_error_after;
     t["distortion"] = rt.distortion;
-    j["final_weight_1e4"] = t;
-    std::cerr << "    final weight 1e4: error " << rt.symmetry_error_after << ", distortion " << rt.distortion
-              << ", " << t["seconds"].dump() << " s\n";
+    j[weight == 100.0 ? "no_refinement" : "no_refinement_final_weight_1e4"] = t;
+    std::cerr << "    no refinement, final weight " << weight << ": error " << rt.symmetry_error_after
+              << ", distortion " << rt.distortion << ", " << t["seconds"].dump() << " s\n";
   }
   std::cerr << "  " << name << ": " << num_vertices(mesh) << " vertices, " << median(seconds) << " s, error "
             << r.symmetry_error_before << " -> " << r.symmetry_error_after << " (naive "

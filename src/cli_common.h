@@ -206,6 +206,7 @@ void add_partition_commands(CLI::App& app, std::function<int()>& run); // partit
 void add_coseg_command(CLI::App& app, std::function<int()>& run);
 void add_symmetry_command(CLI::App& app, std::function<int()>& run); // symmetry detect|symmetrize|enhance|transfer
 void add_points_command(CLI::App& app, std::function<int()>& run);   // points scene|background
+void add_points_segment_commands(CLI::App* points, std::function<int()>& run); // points segment|evaluate
 
 } // namespace shape_analysis_cli
 

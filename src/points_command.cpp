@@ -1,9 +1,11 @@
 // Copyright (c) 2026 CGAL Global Shape Analysis contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-// shape_analysis points scene --points N --seed S --output scene.ply --objects objects.json
+// shape_analysis points generate --seed S --points N --output scene.ply --truth truth.json
+//   (alias: points scene ... --objects truth.json)
 // shape_analysis points background IN (.ply, .xyz, .las, .bin) --output OUT.ply --report R.json
-// shape_analysis points locate IN --output LOCATIONS.json [--truth OBJECTS.json] --report R.json
+// shape_analysis points locate IN --method nc|cc|meanshift|image --output locations.csv
+//   [--truth truth.json] --report R.json
 //
 // The project's ground truth for point-cloud object recognition: a procedural street (road,
 // curbs, sloped ground, buildings, trees, objects of the thesis' classes in clutter) scanned by a
@@ -18,8 +20,11 @@
 #include <CGAL/Point_set_object_recognition/read_point_set.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <regex>
 #include <iostream>
 #include <memory>
@@ -34,6 +39,7 @@ namespace PSOR = CGAL::Point_set_object_recognition;
 
 struct Scene_options
 {
+  std::string command = "scene"; // or "generate"
   std::string output, objects, report;
   double length = 200;
   std::size_t points = 1000000;
@@ -45,7 +51,9 @@ struct Scene_options
   bool quiet = false, verbose = false;
 };
 
-Json objects_json(const std::vector<PSI::Urban_object>& objects)
+// The truth: per object its id, class, location, height, bounding box and the number of points
+// the scanner put on it (`scanned_points`: an object without points cannot be located).
+Json objects_json(const std::vector<PSI::Urban_object>& objects, const std::map<int, std::size_t>& scanned)
 {
   Json list = Json::array();
   for(const PSI::Urban_object& b : objects) {
@@ -57,6 +65,8 @@ Json objects_json(const std::vector<PSI::Urban_object>& objects)
     o["height"] = b.height;
     o["bbox"] = Json(std::vector<double>{b.bbox.xmin(), b.bbox.ymin(), b.bbox.zmin(), b.bbox.xmax(),
                                          b.bbox.ymax(), b.bbox.zmax()});
+    const auto it = scanned.find(b.id);
+    o["scanned_points"] = it == scanned.end() ? std::size_t(0) : it->second;
     list.push_back(o);
   }
   return list;
@@ -65,7 +75,7 @@ Json objects_json(const std::vector<PSI::Urban_object>& objects)
 int run_scene(const Scene_options& o)
 {
   Stopwatch total;
-  Progress progress("points scene", o.quiet, o.verbose);
+  Progress progress("points " + o.command, o.quiet, o.verbose);
   Output_files outputs;
   require_extension(o.output, ".ply", "scanned scene");
   outputs.add_output(o.output, "scanned scene");
@@ -114,17 +124,22 @@ int run_scene(const Scene_options& o)
       blue[i] = c[2];
     }
     CGAL::IO::set_mode(out, CGAL::IO::BINARY);
-    if(!CGAL::IO::write_PLY(out, ps, "written by shape_analysis points scene (CGAL Global Shape Analysis)"))
+    if(!CGAL::IO::write_PLY(out, ps, "written by shape_analysis points " + o.command + " (CGAL Global Shape Analysis)"))
       throw Cli_error("cannot write " + o.output);
   });
   std::size_t object_points = 0;
+  std::map<int, std::size_t> scanned;
   for(const PSI::Urban_scan_point& p : scan.points)
-    object_points += p.instance > 0 ? 1 : 0;
+    if(p.instance > 0) {
+      ++object_points;
+      ++scanned[p.instance];
+    }
   if(!o.objects.empty())
-    outputs.stage(o.objects, false, [&](std::ostream& out) { out << objects_json(scene.objects).dump() << "\n"; });
+    outputs.stage(o.objects, false,
+                  [&](std::ostream& out) { out << objects_json(scene.objects, scanned).dump() << "\n"; });
   if(!o.report.empty()) {
     Json report = Json::object();
-    report["command"] = "points scene";
+    report["command"] = "points " + o.command;
     Json parameters = Json::object();
     parameters["length"] = o.length;
     parameters["points"] = o.points;
@@ -139,6 +154,7 @@ int run_scene(const Scene_options& o)
     report["scan_lines"] = scan.scan_lines;
     report["profile_spacing"] = scan.profile_spacing;
     report["number_of_objects"] = scene.objects.size();
+    report["scanned_objects"] = scanned.size();
     report["number_of_triangles"] = scene.triangles.size();
     stage_report(outputs, o.report, report, seconds, 0.0, total.seconds(),
                  {{"scene", o.output}, {"objects", o.objects}});
@@ -249,34 +265,74 @@ int run_background(const Background_options& o)
 
 struct Locate_options
 {
-  std::string input, output, truth, report, method = "components";
-  double spacing = 0.3, tallest = 12, radius = 1, shift_radius = 2;
-  std::size_t minimum = 20;
+  std::string input, output, truth, report, method = "nc";
+  double spacing = 0.3, tallest = 12, radius = 1, shift_radius = 2, cell = 0.15, cut_threshold = 0.002,
+         sigma = 0.2, image_threshold = 0.02;
+  std::size_t minimum = 10, truth_points = 10, threads = 0;
   bool quiet = false, verbose = false;
 };
 
-// The (x, y) of the objects of a ground-truth file written by `points scene`.
-std::vector<std::array<double, 2>> read_truth(const std::string& path)
+// An object of a truth file: (x, y) and its scanned points (-1 when the file does not say).
+struct Truth_location
+{
+  std::array<double, 2> xy;
+  long scanned_points;
+};
+
+// The objects of a truth file written by `points generate --truth` (or `points scene
+// --objects`): every object {...} with "location": [x, y, ...] and, if there,
+// "scanned_points": n.
+std::vector<Truth_location> read_truth(const std::string& path)
 {
   std::ifstream in(path);
   if(!in)
     throw Cli_error("cannot open " + path);
   std::stringstream text;
   text << in.rdbuf();
-  // Every "location": [x, y, ...] of the file (the objects of `points scene --objects`).
-  std::vector<std::array<double, 2>> truth;
+  std::vector<Truth_location> truth;
   const std::string content = text.str();
-  const std::regex location("\"location\"\\s*:\\s*\\[\\s*([-+0-9.eE]+)\\s*,\\s*([-+0-9.eE]+)");
-  for(auto it = std::sregex_iterator(content.begin(), content.end(), location); it != std::sregex_iterator(); ++it) {
-    try {
-      truth.push_back({std::stod((*it)[1].str()), std::stod((*it)[2].str())});
-    } catch(const std::exception&) {
-      throw Cli_error(path + ": a location is not a number");
+  const std::regex location("\"location\"\\s*:\\s*\\[\\s*([-+0-9.eE]+)\\s*,\\s*([-+0-9.eE]+)"),
+    scanned("\"scanned_points\"\\s*:\\s*([0-9]+)");
+  for(std::size_t start = content.find('{'); start != std::string::npos;) {
+    const std::size_t end = content.find('}', start);
+    if(end == std::string::npos)
+      throw Cli_error(path + ": an object is not closed");
+    const std::string object = content.substr(start, end - start);
+    std::smatch m;
+    if(std::regex_search(object, m, location)) {
+      Truth_location t{{0, 0}, -1};
+      try {
+        t.xy = {std::stod(m[1].str()), std::stod(m[2].str())};
+        if(std::regex_search(object, m, scanned))
+          t.scanned_points = std::stol(m[1].str());
+      } catch(const std::exception&) {
+        throw Cli_error(path + ": a location is not a number");
+      }
+      truth.push_back(t);
     }
+    start = content.find('{', end);
   }
   if(truth.empty() && content.find_first_not_of(" \t\r\n[]") != std::string::npos)
-    throw Cli_error(path + ": no \"location\": [x, y, ...] in it (write it with 'points scene --objects')");
+    throw Cli_error(path + ": no \"location\": [x, y, ...] in it (write it with 'points generate --truth')");
   return truth;
+}
+
+bool has_extension(const std::string& path, const std::string& extension)
+{
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == extension;
+}
+
+PSOR::Localization_method localization_method(const std::string& name)
+{
+  if(name == "nc")
+    return PSOR::Localization_method::NORMALIZED_CUT;
+  if(name == "meanshift" || name == "mean-shift")
+    return PSOR::Localization_method::MEAN_SHIFT;
+  if(name == "image")
+    return PSOR::Localization_method::HEIGHT_IMAGE;
+  return PSOR::Localization_method::CONNECTED_COMPONENTS; // cc, components
 }
 
 int run_locate(const Locate_options& o)
@@ -287,7 +343,10 @@ int run_locate(const Locate_options& o)
   outputs.add_input(o.input);
   if(!o.truth.empty())
     outputs.add_input(o.truth);
-  require_extension(o.output, ".json", "locations");
+  const bool csv = has_extension(o.output, ".csv");
+  if(!csv && !has_extension(o.output, ".json"))
+    throw Usage_error("the locations must be written to a .csv file (x,y,z per line) or a .json file, not " +
+                      o.output);
   outputs.add_output(o.output, "locations");
   outputs.add_optional_output(o.report, "report");
   if(!(o.radius > 0))
@@ -296,68 +355,125 @@ int run_locate(const Locate_options& o)
   progress.stage("reading " + o.input);
   Stopwatch reading;
   CGAL::Point_set_3<Point_3> points;
-  // The locations are compared with the truth in the file's frame: no shift.
-  const PSOR::Point_set_read_result read =
-    PSOR::read_point_set(o.input, points, PSOR::parameters::shift_to_local_origin(false));
+  // Computed in the reader's local frame (double precision for georeferenced scans), written
+  // back in the file's coordinates.
+  const PSOR::Point_set_read_result read = PSOR::read_point_set(o.input, points);
   const double read_seconds = reading.seconds();
-  const std::vector<std::array<double, 2>> truth = o.truth.empty() ? std::vector<std::array<double, 2>>()
-                                                                   : read_truth(o.truth);
-  progress.stage("locating objects among " + std::to_string(points.size()) + " points");
+  const std::vector<Truth_location> truth = o.truth.empty() ? std::vector<Truth_location>() : read_truth(o.truth);
+
+  // The input is a scan unless it holds the 'kind' property of 'points background' (then only
+  // the points of kind 0, the foreground, are used).
   Stopwatch work;
-  const PSOR::Localization_method method =
-    o.method == "mean-shift" ? PSOR::Localization_method::MEAN_SHIFT : PSOR::Localization_method::CONNECTED_COMPONENTS;
+  std::vector<Point_3> foreground;
+  PSOR::Background_removal_result background;
+  const auto kind = points.property_map<int>("kind");
+  const bool scan = !kind.second;
+  if(scan) {
+    progress.stage("removing the background of " + std::to_string(points.size()) + " points");
+    background = PSOR::remove_background(points);
+    foreground.reserve(background.foreground.size());
+    for(std::size_t i : background.foreground)
+      foreground.push_back(points.point(*(points.begin() + std::ptrdiff_t(i))));
+  } else
+    for(auto i : points)
+      if(kind.first[i] == 0)
+        foreground.push_back(points.point(i));
+  const double background_seconds = work.seconds();
+  progress.stage("locating objects among " + std::to_string(foreground.size()) + " points");
+  Stopwatch locating;
   const PSOR::Localization_result r = PSOR::locate_objects(
-    points, PSOR::parameters::localization_method(method)
-              .mean_shift_radius(o.shift_radius)
-              .component_spacing(o.spacing)
-              .minimum_cluster_size(o.minimum)
-              .maximum_cluster_height(o.tallest));
+    foreground, PSOR::parameters::localization_method(localization_method(o.method))
+                  .mean_shift_radius(o.shift_radius)
+                  .component_spacing(o.spacing)
+                  .minimum_cluster_size(o.minimum)
+                  .maximum_cluster_height(o.tallest)
+                  .localization_cell_size(o.cell)
+                  .normalized_cut_threshold(o.cut_threshold)
+                  .height_image_sigma(o.sigma)
+                  .height_image_threshold(o.image_threshold)
+                  .number_of_threads(o.threads));
+  const double locate_seconds = locating.seconds();
   const double seconds = work.seconds();
-  Json list = Json::array();
-  for(const PSOR::Object_location& l : r.locations) {
-    Json j = Json::object();
-    j["location"] = Json(std::vector<double>{l.position[0], l.position[1], l.position[2]});
-    j["points"] = l.number_of_points;
-    j["height"] = l.height;
-    list.push_back(j);
+  std::vector<PSOR::Object_location> located = r.locations;
+  for(PSOR::Object_location& l : located)
+    for(int c = 0; c < 3; ++c)
+      l.position[std::size_t(c)] += read.offset[std::size_t(c)];
+  outputs.stage(o.output, false, [&](std::ostream& out) {
+    if(csv) {
+      out << std::setprecision(17) << "x,y,z\n";
+      for(const PSOR::Object_location& l : located)
+        out << l.position[0] << ',' << l.position[1] << ',' << l.position[2] << '\n';
+      return;
+    }
+    Json list = Json::array();
+    for(const PSOR::Object_location& l : located) {
+      Json j = Json::object();
+      j["location"] = Json(std::vector<double>{l.position[0], l.position[1], l.position[2]});
+      j["points"] = l.number_of_points;
+      j["height"] = l.height;
+      list.push_back(j);
+    }
+    out << list.dump() << "\n";
+  });
+  // Precision against every true object; recall against the objects that received at least
+  // --truth-points points from the scanner (all of them when the truth does not say).
+  std::vector<std::array<double, 2>> all, visible;
+  for(const Truth_location& t : truth) {
+    all.push_back(t.xy);
+    if(t.scanned_points < 0 || std::size_t(t.scanned_points) >= o.truth_points)
+      visible.push_back(t.xy);
   }
-  outputs.stage(o.output, false, [&](std::ostream& out) { out << list.dump() << "\n"; });
-  PSOR::Localization_evaluation e;
-  if(!truth.empty())
-    e = PSOR::evaluate_locations(r.locations, truth, o.radius);
+  PSOR::Localization_evaluation e, e_all;
+  if(!truth.empty()) {
+    e_all = PSOR::evaluate_locations(located, all, o.radius);
+    e = PSOR::evaluate_locations(located, visible, o.radius);
+  }
   if(!o.report.empty()) {
     Json report = Json::object();
     report["command"] = "points locate";
     report["input"] = o.input;
     report["format"] = read.format;
     report["number_of_points"] = points.size();
+    report["background_removed"] = scan;
+    report["foreground_points"] = foreground.size();
     Json parameters = Json::object();
     parameters["method"] = o.method;
     parameters["mean_shift_radius"] = o.shift_radius;
     parameters["component_spacing"] = o.spacing;
     parameters["minimum_cluster_size"] = o.minimum;
     parameters["maximum_cluster_height"] = o.tallest;
+    parameters["localization_cell_size"] = o.cell;
+    parameters["normalized_cut_threshold"] = o.cut_threshold;
+    parameters["height_image_sigma"] = o.sigma;
+    parameters["height_image_threshold"] = o.image_threshold;
     report["parameters"] = parameters;
     report["clusters"] = r.number_of_clusters;
     report["locations"] = r.locations.size();
+    report["seconds_background_removal"] = scan ? background_seconds : 0.0;
+    report["seconds_localization"] = locate_seconds;
+    report["points_per_second"] = seconds > 0 ? double(points.size()) / seconds : 0.0;
     if(!truth.empty()) {
       Json ev = Json::object();
       ev["radius"] = o.radius;
-      ev["objects"] = truth.size();
-      ev["correct_locations"] = e.correct_locations;
+      ev["minimum_scanned_points"] = o.truth_points;
+      ev["objects"] = visible.size();
+      ev["all_objects"] = all.size();
+      ev["correct_locations"] = e_all.correct_locations;
       ev["found_objects"] = e.found_objects;
-      ev["precision"] = e.precision;
+      ev["precision"] = e_all.precision;
       ev["recall"] = e.recall;
+      ev["recall_all_objects"] = e_all.recall;
       report["evaluation"] = ev;
     }
     stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(), {{"locations", o.output}});
   }
   outputs.commit();
   progress.done();
-  std::cout << o.input << ": " << r.locations.size() << " locations among " << points.size() << " points";
+  std::cout << o.input << ": " << r.locations.size() << " locations among " << foreground.size()
+            << (scan ? " foreground points of " + std::to_string(points.size()) : std::string(" points"));
   if(!truth.empty())
-    std::cout << "; precision " << e.precision << ", recall " << e.recall << " (" << truth.size() << " objects, "
-              << o.radius << " m)";
+    std::cout << "; precision " << e_all.precision << ", recall " << e.recall << " (" << visible.size()
+              << " objects with at least " << o.truth_points << " points, " << o.radius << " m)";
   std::cout << "\n";
   return 0;
 }
@@ -369,25 +485,32 @@ void add_points_command(CLI::App& app, std::function<int()>& run)
   CLI::App* points = app.add_subcommand("points", "Point clouds: scanned urban scenes, background removal, localization.");
   points->require_subcommand(1);
 
-  auto s = std::make_shared<Scene_options>();
-  CLI::App* scene = points->add_subcommand(
-    "scene", "Generate a street (road, curbs, sloped ground, buildings, trees and small objects of 16 "
-             "classes in clutter) scanned by a simulated mobile LIDAR; per point its object id and class.");
-  scene->add_option("-o,--output", s->output,
-                    "The scan (.ply: x y z double, instance and label int, intensity float, colours by class)")
-    ->required();
-  scene->add_option("--objects", s->objects, "The ground-truth objects (.json: id, class, location, height, bbox)");
-  scene->add_option("--report", s->report, "JSON report (parameters, counts, seconds)");
-  scene->add_option("--length", s->length, "Length of the street in metres")->capture_default_str();
-  scene->add_option("--points", s->points, "Number of mobile LIDAR points wanted (roughly)")->capture_default_str();
-  scene->add_option("--objects-per-100m", s->objects_per_100m, "Objects per 100 m of street")->capture_default_str();
-  scene->add_option("--noise", s->noise, "Standard deviation of the range noise in metres")->capture_default_str();
-  scene->add_flag("--airborne", s->airborne, "Add an airborne pass (points on a 0.5 m grid from above)");
-  scene->add_option("--seed", s->seed, "Random seed (same seed, same scene)")->capture_default_str();
-  scene->add_option("--threads", s->threads, "Largest number of threads (0: all cores)")->capture_default_str();
-  scene->add_flag("-q,--quiet", s->quiet, "No progress on stderr");
-  scene->add_flag("-v,--verbose", s->verbose, "Progress on stderr even when it is not a terminal");
-  scene->callback([s, &run]() { run = [s]() { return run_scene(*s); }; });
+  // points generate (the name, --truth) and points scene (the first name, --objects).
+  for(const std::string name : {"generate", "scene"}) {
+    auto s = std::make_shared<Scene_options>();
+    s->command = name;
+    CLI::App* scene = points->add_subcommand(
+      name, name == "generate"
+              ? "Generate a street (road, curbs, sloped ground, buildings, trees and small objects of 16 "
+                "classes in clutter) scanned by a simulated mobile LIDAR; per point its object id and class."
+              : "The same as 'points generate', with --objects for --truth.");
+    scene->add_option("-o,--output", s->output,
+                      "The scan (.ply: x y z double, instance and label int, intensity float, colours by class)")
+      ->required();
+    scene->add_option(name == "generate" ? "--truth" : "--objects", s->objects,
+                      "The ground-truth objects (.json: id, class, location, height, bbox, scanned_points)");
+    scene->add_option("--report", s->report, "JSON report (parameters, counts, seconds)");
+    scene->add_option("--length", s->length, "Length of the street in metres")->capture_default_str();
+    scene->add_option("--points", s->points, "Number of mobile LIDAR points wanted (roughly)")->capture_default_str();
+    scene->add_option("--objects-per-100m", s->objects_per_100m, "Objects per 100 m of street")->capture_default_str();
+    scene->add_option("--noise", s->noise, "Standard deviation of the range noise in metres")->capture_default_str();
+    scene->add_flag("--airborne", s->airborne, "Add an airborne pass (points on a 0.5 m grid from above)");
+    scene->add_option("--seed", s->seed, "Random seed (same seed, same scene)")->capture_default_str();
+    scene->add_option("--threads", s->threads, "Largest number of threads (0: all cores)")->capture_default_str();
+    scene->add_flag("-q,--quiet", s->quiet, "No progress on stderr");
+    scene->add_flag("-v,--verbose", s->verbose, "Progress on stderr even when it is not a terminal");
+    scene->callback([s, &run]() { run = [s]() { return run_scene(*s); }; });
+  }
 
   auto b = std::make_shared<Background_options>();
   CLI::App* background = points->add_subcommand(
@@ -417,24 +540,44 @@ void add_points_command(CLI::App& app, std::function<int()>& run)
 
   auto l = std::make_shared<Locate_options>();
   CLI::App* locate = points->add_subcommand(
-    "locate", "Locate potential objects among foreground points (the output of 'points background') by "
-              "connected components or mean shift; with --truth, precision and recall of the locations.");
-  locate->add_option("input", l->input, "The foreground points (.ply, .xyz, .las, .bin)")->required();
-  locate->add_option("-o,--output", l->output, "The locations (.json: location [x, y, z], points, height)")
+    "locate", "Locate potential objects in a scan (its background removed first) or among the foreground "
+              "points of 'points background'; with --truth, precision and recall of the locations.");
+  locate->add_option("input", l->input,
+                     "The scan or the output of 'points background' (.ply, .xyz, .las, .bin)")
     ->required();
-  locate->add_option("--truth", l->truth, "True objects (.json, as written by 'points scene --objects')");
+  locate->add_option("-o,--output", l->output,
+                     "The locations: .csv (a line 'x,y,z', then one location per line, in the input's "
+                     "coordinates) or .json (location [x, y, z], points, height)")
+    ->required();
+  locate->add_option("--truth", l->truth, "True objects (.json, as written by 'points generate --truth')");
+  locate->add_option("--truth-points", l->truth_points,
+                     "Recall counts the true objects with at least this many scanned points")
+    ->capture_default_str();
   locate->add_option("--report", l->report, "JSON report (counts, precision and recall, seconds)");
-  locate->add_option("--method", l->method, "components (connected voxels) or mean-shift (modes of the density)")
+  locate->add_option("--method", l->method,
+                     "nc (normalized cut), cc (connected components), meanshift, image (height image); "
+                     "'components' and 'mean-shift' are accepted too")
     ->capture_default_str()
-    ->check(CLI::IsMember({"components", "mean-shift"}));
+    ->check(CLI::IsMember({"nc", "cc", "meanshift", "image", "components", "mean-shift"}));
   locate->add_option("--shift-radius", l->shift_radius, "Radius of the mean shift's kernel (m)")->capture_default_str();
-  locate->add_option("--spacing", l->spacing, "Side of the voxels whose contact makes clusters (m)")->capture_default_str();
+  locate->add_option("--spacing", l->spacing, "Side of the voxels whose contact makes clusters (cc, m)")
+    ->capture_default_str();
+  locate->add_option("--cell", l->cell, "Side of the voxels (nc) and of the height image's cells (image), m")
+    ->capture_default_str();
+  locate->add_option("--cut-threshold", l->cut_threshold, "Normalized cut below which clusters stay apart (nc)")
+    ->capture_default_str();
+  locate->add_option("--sigma", l->sigma, "Smaller Gaussian of the difference of Gaussians (image, m)")
+    ->capture_default_str();
+  locate->add_option("--image-threshold", l->image_threshold, "Response of an object's cells (image, m)")
+    ->capture_default_str();
   locate->add_option("--min-points", l->minimum, "Smaller clusters are rejected")->capture_default_str();
   locate->add_option("--max-height", l->tallest, "Taller clusters are rejected (m)")->capture_default_str();
   locate->add_option("--radius", l->radius, "Largest horizontal distance of a correct location (m)")->capture_default_str();
+  locate->add_option("--threads", l->threads, "Largest number of threads (0: all cores)")->capture_default_str();
   locate->add_flag("-q,--quiet", l->quiet, "No progress on stderr");
   locate->add_flag("-v,--verbose", l->verbose, "Progress on stderr even when it is not a terminal");
   locate->callback([l, &run]() { run = [l]() { return run_locate(*l); }; });
+  add_points_segment_commands(points, run);
 }
 
 } // namespace shape_analysis_cli

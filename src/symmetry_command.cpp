@@ -54,6 +54,7 @@ struct Symmetrize_options : Common_options
   std::size_t iterations = 5;
   std::size_t levels = 0;
   double final_weight = 100;
+  double target_error = 1e-4;
 };
 
 struct Enhance_options : Symmetrize_options
@@ -349,6 +350,7 @@ SMS::Symmetrization_result<Kernel> symmetrize_input(const Symmetrize_options& o,
                                 SMS::parameters::number_of_iterations(o.iterations)
                                   .number_of_levels(o.levels)
                                   .final_symmetry_weight(o.final_weight)
+                                  .target_symmetry_error(o.target_error)
                                   .number_of_threads(o.threads)
                                   .progress_callback(on_progress));
   progress.done();
@@ -405,6 +407,7 @@ int run_symmetrize(const Symmetrize_options& o)
     parameters["iterations"] = o.iterations;
     parameters["levels"] = o.levels;
     parameters["final_weight"] = o.final_weight;
+    parameters["target_error"] = o.target_error;
     report["parameters"] = parameters;
     add_symmetrization_report(report, r, symmetry, detected, detect_seconds);
     stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(),
@@ -624,6 +627,10 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run)
                   "Weight of symmetry against shape in the last steps (> 0): larger, less asymmetry and more "
                   "distortion where the two sides have no matching vertices")
     ->capture_default_str();
+  sym->add_option("--target-error", s->target_error,
+                  "RMS symmetry error (fraction of the diagonal) at which the isometric refinement stops "
+                  "(0: no refinement); smaller, more symmetric and more distorted")
+    ->capture_default_str();
   sym->callback([s, &run]() { run = [s]() { return run_symmetrize(*s); }; });
 
   auto e = std::make_shared<Enhance_options>();
@@ -639,6 +646,7 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run)
   enhance->add_option("--iterations", e->iterations, "As for symmetrize")->capture_default_str();
   enhance->add_option("--levels", e->levels, "As for symmetrize")->capture_default_str();
   enhance->add_option("--final-weight", e->final_weight, "As for symmetrize")->capture_default_str();
+  enhance->add_option("--target-error", e->target_error, "As for symmetrize")->capture_default_str();
   enhance->callback([e, &run]() { run = [e]() { return run_enhance(*e); }; });
 
   auto t = std::make_shared<Transfer_options>();

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
 // Removes the ground, the isolated points and the buildings of a LIDAR scan, writes what is left
-// (the candidate small objects) to a PLY file and locates the objects among those points.
+// (the candidate small objects) to a PLY file and locates the objects among those points by
+// normalized-cut clustering.
 //
 //   remove_background [scan.ply] [foreground.ply]     (default: CGAL's b9_training.ply)
 
@@ -41,7 +42,9 @@ int main(int argc, char** argv)
     Point_set kept;
     for(std::size_t i : r.foreground)
       kept.insert(points.point(*(points.begin() + std::ptrdiff_t(i))));
-    const PSOR::Localization_result l = PSOR::locate_objects(kept, PSOR::parameters::component_spacing(1.0));
+    // Normalized-cut clustering of a 4-nearest-neighbour graph of 1 m voxels (airborne spacing).
+    const PSOR::Localization_result l = PSOR::locate_objects(
+      kept, PSOR::parameters::localization_method(PSOR::Localization_method::NORMALIZED_CUT).localization_cell_size(1.0));
     std::cout << l.locations.size() << " potential objects";
     for(std::size_t k = 0; k < l.locations.size() && k < 5; ++k)
       std::cout << (k ? ", " : ": ") << "(" << l.locations[k].position[0] << ", " << l.locations[k].position[1]

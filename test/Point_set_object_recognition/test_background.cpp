@@ -103,6 +103,61 @@ TEST(BackgroundRemoval, GroundBuildingsGoObjectsStay)
               r.foreground.size(), s.points.size());
 }
 
+TEST(BackgroundRemoval, ObjectsAgainstWallsStay)
+{
+  // On the street: the objects standing against a facade (newspaper boxes, mailing boxes...)
+  // keep most of their points; the facades go.
+  const Scanned& s = street();
+  const auto r = PSOR::remove_background(s.points);
+  std::map<int, std::pair<std::size_t, std::size_t>> per_object; // id -> (points, kept)
+  for(std::size_t i = 0; i < s.points.size(); ++i) {
+    const auto& p = s.scan.points[i];
+    if(p.instance <= 0)
+      continue;
+    const auto& b = s.scene.objects[std::size_t(p.instance - 1)].bbox;
+    if((std::max)(std::abs(b.ymin()), std::abs(b.ymax())) < s.scene.facade_y - 0.05)
+      continue;
+    auto& po = per_object[p.instance];
+    ++po.first;
+    po.second += r.kind[i] == Point_kind::FOREGROUND ? 1 : 0;
+  }
+  ASSERT_GE(per_object.size(), 5u);
+  std::size_t kept_half = 0;
+  for(const auto& kv : per_object)
+    kept_half += 2 * kv.second.second >= kv.second.first ? 1 : 0;
+  EXPECT_GT(double(kept_half), 0.6 * double(per_object.size())) << kept_half << " of " << per_object.size();
+
+  // A box of 0.5 x 0.5 x 1.2 m against a wall 8 m high and 30 m long, on flat ground.
+  std::vector<Point> points;
+  for(double x = 0; x <= 30; x += 0.05)
+    for(double y = 0; y <= 10; y += 0.1)
+      points.emplace_back(x, y, 0);
+  for(double x = 0; x <= 30; x += 0.05)
+    for(double z = 0.05; z <= 8; z += 0.05)
+      points.emplace_back(x, 10, z);
+  const std::size_t box = points.size();
+  for(double x = 14.75; x <= 15.25; x += 0.03)
+    for(double z = 0.05; z <= 1.2; z += 0.03)
+      points.emplace_back(x, 9.5, z); // its front face
+  for(double x = 14.75; x <= 15.25; x += 0.03)
+    for(double y = 9.5; y < 10; y += 0.03)
+      points.emplace_back(x, y, 1.2); // its top
+  const auto w = PSOR::remove_background(points);
+  std::size_t wall = 0, wall_kept = 0, box_kept = 0, box_high = 0;
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    const bool kept = w.kind[i] == Point_kind::FOREGROUND;
+    if(i >= box) {
+      box_high += points[i].z() > 0.3 ? 1 : 0;
+      box_kept += kept && points[i].z() > 0.3 ? 1 : 0;
+    } else if(points[i].y() == 10 && points[i].z() > 0.3) {
+      ++wall;
+      wall_kept += kept ? 1 : 0;
+    }
+  }
+  EXPECT_GT(double(box_kept), 0.8 * double(box_high));
+  EXPECT_LT(double(wall_kept), 0.01 * double(wall));
+}
+
 TEST(BackgroundRemoval, IsolatedPointsGo)
 {
   std::vector<Point> points = street().points;

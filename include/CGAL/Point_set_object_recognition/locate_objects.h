@@ -11,6 +11,7 @@
 #include <CGAL/Point_set_3.h>
 #include <CGAL/property_map.h>
 
+#include <CGAL/Point_set_object_recognition/internal/Localization.h>
 #include <CGAL/Point_set_object_recognition/internal/Voxel_grid.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/parameters.h>
@@ -18,8 +19,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -32,14 +35,18 @@ using CGAL::Shape_analysis::Bad_input;
 /// How `locate_objects()` groups the points into potential objects.
 enum class Localization_method {
   CONNECTED_COMPONENTS, ///< touching voxels of side `component_spacing`
-  MEAN_SHIFT            ///< modes of the horizontal point density, flat kernel of `mean_shift_radius`
+  MEAN_SHIFT,           ///< modes of the horizontal point density, flat kernel of `mean_shift_radius`
+  HEIGHT_IMAGE,         ///< blobs of a height image filtered by a difference of Gaussians
+  NORMALIZED_CUT        ///< agglomerative normalized-cut clustering of a nearest-neighbour graph
 };
 
 /// \ingroup PkgPointSetObjectRecognitionRef
 /// A potential object found by `locate_objects()`.
 struct Object_location
 {
-  std::array<double, 3> position{{0, 0, 0}}; ///< the mean \f$(x, y)\f$ of its points and their lowest \f$z\f$
+  /// the mean \f$(x, y)\f$ of the points of its foot (less than 1 m above its lowest point) and
+  /// the \f$z\f$ of its lowest point
+  std::array<double, 3> position{{0, 0, 0}};
   std::size_t number_of_points = 0;           ///< the points of its cluster
   double height = 0;                          ///< the vertical extent of its cluster
 };
@@ -53,7 +60,7 @@ struct Localization_result
   /// cluster that was rejected.
   std::vector<std::size_t> location_of_point;
   static constexpr std::size_t no_location = std::size_t(-1); ///< see `location_of_point`
-  std::size_t number_of_clusters = 0;      ///< before the rejection of too small and too high ones
+  std::size_t number_of_clusters = 0;      ///< before the rejection of too small, too high and floating ones
 };
 
 /// \ingroup PkgPointSetObjectRecognitionRef
@@ -68,6 +75,115 @@ struct Localization_evaluation
   double recall = 0;    ///< found objects / objects (1 when there is none)
 };
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+struct Localization_options
+{
+  Localization_method method = Localization_method::CONNECTED_COMPONENTS;
+  double spacing = 0.3, tallest = 12, shift_radius = 2, cell = 0.15, cut_threshold = 0.002, sigma = 0.2,
+         image_threshold = 0.02;
+  std::size_t minimum = 10, threads = 0;
+};
+
+// Above this, a cluster's points are not its foot (metres above its lowest point).
+constexpr double foot_height = 1.0;
+// A cluster whose lowest point stands more than `floating_height` above the lowest foreground
+// point within `floating_radius` of its location floats (the head of a lamp post, a tree crown).
+constexpr double floating_height = 2.0, floating_radius = 3.0;
+
+inline Localization_result locate_objects(const std::vector<std::array<double, 3>>& p, const Localization_options& o)
+{
+  Localization_result r;
+  r.location_of_point.assign(p.size(), Localization_result::no_location);
+  if(p.empty())
+    return r;
+  std::array<double, 3> lo, hi;
+  double voxel = o.spacing;
+  if(o.method == Localization_method::MEAN_SHIFT)
+    voxel = o.shift_radius / 2;
+  else if(o.method == Localization_method::HEIGHT_IMAGE || o.method == Localization_method::NORMALIZED_CUT)
+    voxel = o.cell;
+  checked_bounds(p, (std::min)(voxel, floating_radius), "locate_objects", lo, hi);
+  std::size_t clusters = 0;
+  std::vector<std::uint32_t> cluster;
+  switch(o.method) {
+  case Localization_method::MEAN_SHIFT:
+    cluster = mean_shift_clusters(p, o.shift_radius, lo, clusters);
+    break;
+  case Localization_method::HEIGHT_IMAGE:
+    cluster = height_image_clusters(p, o.cell, o.sigma, o.image_threshold, lo, hi, clusters);
+    break;
+  case Localization_method::NORMALIZED_CUT:
+    cluster = normalized_cut_clusters(p, o.cell, o.cut_threshold, lo, o.threads, clusters);
+    break;
+  default:
+    cluster = voxel_components(p, std::vector<char>(p.size(), 1), o.spacing, lo, clusters);
+  }
+  r.number_of_clusters = clusters;
+  // Per cluster: count, lowest and highest z; then the mean (x, y) of its foot.
+  std::vector<std::size_t> count(clusters, 0), foot(clusters, 0);
+  std::vector<std::array<double, 2>> z(clusters, {std::numeric_limits<double>::infinity(),
+                                                  -std::numeric_limits<double>::infinity()});
+  std::vector<std::array<double, 2>> xy(clusters, {0, 0});
+  for(std::size_t i = 0; i < p.size(); ++i) {
+    if(cluster[i] == no_component)
+      continue;
+    auto& a = z[cluster[i]];
+    ++count[cluster[i]];
+    a[0] = (std::min)(a[0], p[i][2]), a[1] = (std::max)(a[1], p[i][2]);
+  }
+  for(std::size_t i = 0; i < p.size(); ++i) {
+    const std::uint32_t c = cluster[i];
+    if(c == no_component || p[i][2] > z[c][0] + foot_height)
+      continue;
+    ++foot[c];
+    xy[c][0] += p[i][0] - lo[0], xy[c][1] += p[i][1] - lo[1];
+  }
+  // The lowest foreground point per square of side floating_radius (for the floating test).
+  std::unordered_map<std::uint64_t, double> lowest;
+  for(const auto& q : p) {
+    auto it = lowest.emplace(voxel_key(q[0], q[1], lo[2], floating_radius, lo), q[2]).first;
+    it->second = (std::min)(it->second, q[2]);
+  }
+  std::vector<std::pair<Object_location, std::size_t>> kept; // with its cluster
+  for(std::size_t c = 0; c < clusters; ++c) {
+    const double height = z[c][1] - z[c][0];
+    if(count[c] < o.minimum || height > o.tallest)
+      continue;
+    Object_location l;
+    l.position = {lo[0] + xy[c][0] / double(foot[c]), lo[1] + xy[c][1] / double(foot[c]), z[c][0]};
+    double ground = std::numeric_limits<double>::infinity();
+    const std::uint64_t key = voxel_key(l.position[0], l.position[1], lo[2], floating_radius, lo);
+    for(int dj = -1; dj <= 1; ++dj)
+      for(int di = -1; di <= 1; ++di) {
+        const auto it = lowest.find(voxel_neighbor(key, di, dj, 0));
+        if(it != lowest.end())
+          ground = (std::min)(ground, it->second);
+      }
+    if(z[c][0] > ground + floating_height)
+      continue;
+    l.number_of_points = count[c];
+    l.height = height;
+    kept.emplace_back(l, c);
+  }
+  std::sort(kept.begin(), kept.end(), [](const auto& a, const auto& b) {
+    return std::tie(a.first.position[0], a.first.position[1]) < std::tie(b.first.position[0], b.first.position[1]);
+  });
+  std::vector<std::size_t> location_of_cluster(clusters, Localization_result::no_location);
+  for(std::size_t k = 0; k < kept.size(); ++k) {
+    r.locations.push_back(kept[k].first);
+    location_of_cluster[kept[k].second] = k;
+  }
+  for(std::size_t i = 0; i < p.size(); ++i)
+    if(cluster[i] != no_component)
+      r.location_of_point[i] = location_of_cluster[cluster[i]];
+  return r;
+}
+
+} // namespace internal
+/// \endcond
+
 /*!
 \ingroup PkgPointSetObjectRecognitionRef
 
@@ -80,11 +196,33 @@ clusters by the `localization_method`:
   starts at the mean of its points and climbs to a mode of the horizontal point density (mean of
   the points within `mean_shift_radius`); squares whose modes are closer than half the radius
   form one cluster. Nearby objects (a post beside a trash can) are merged, a long one (a car seen
-  in pieces) is kept whole.
+  in pieces) is kept whole;
+- `Localization_method::HEIGHT_IMAGE`: an image of cells of side `localization_cell_size` in
+  \f$(x, y)\f$ holds the height of each cell's highest point above the lowest point within 1.5 m
+  (the foot of the foreground nearby); the image is filtered by the difference of two Gaussians of
+  standard deviations `height_image_sigma` and three times that, which responds to blobs of about
+  the object's size; the cells whose response exceeds `height_image_threshold` form 8-connected
+  components, each a cluster of the points of its cells (points elsewhere are in no cluster);
+- `Localization_method::NORMALIZED_CUT`: the points are downsampled to voxels of side
+  `localization_cell_size`; the voxels' centroids are joined to their 4 nearest neighbours by
+  edges of weight \f$\exp(-d^2 / 2 s^2)\f$ (\f$d\f$ their distance, \f$s\f$ the voxel side, the
+  point spacing after downsampling), the closest voxels of disconnected components of that graph
+  within 5 voxels are linked with the same weight, and clusters (starting from single voxels)
+  merge greedily, the pair that lowers \f$\sum_S cut(S) / |S|\f$ the most first, as long as the
+  normalized cut between the two, \f$w(S, T) (1/|S| + 1/|T|)\f$ (sizes in voxels), is at least
+  `normalized_cut_threshold`. Pieces of one object separated by occlusion are joined; objects
+  that touch each other give one cluster.
 
-Clusters of fewer than `minimum_cluster_size` points (debris, remains of the ground) and clusters
-taller than `maximum_cluster_height` (remains of buildings, tall trees) are rejected; each other
-cluster gives one location, the mean \f$(x, y)\f$ of its points at the height of its lowest point.
+Clusters of fewer than `minimum_cluster_size` points (debris, remains of the ground), clusters
+taller than `maximum_cluster_height` (remains of buildings, tall trees) and floating clusters
+(whose lowest point stands more than 2 m above the lowest foreground point within about 3 m: the
+head of a lamp post, a tree crown seen apart from its trunk) are rejected; each other cluster
+gives one location: the mean \f$(x, y)\f$ of its foot (its points less than 1 m above its lowest
+one), which for an object standing on the ground is where it stands even when an arm, a sign
+board or a tree crown leans over, at the height of its lowest point.
+
+Nearest-neighbour searches run on `number_of_threads` threads with TBB; the result is the same
+for any number of threads.
 
 \tparam PointRange a model of `ConstRange`
 \tparam NamedParameters a sequence of named parameters
@@ -115,10 +253,39 @@ cluster gives one location, the mean \f$(x, y)\f$ of its points at the height of
     \cgalParamDefault{`0.3`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
+  \cgalParamNBegin{localization_cell_size}
+    \cgalParamDescription{the side of the voxels of the normalized cut and of the cells of the height image, in metres}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0.15`}
+    \cgalParamExtra{must be positive; the height image may hold at most \f$2 \cdot 10^8\f$ cells}
+  \cgalParamNEnd
+  \cgalParamNBegin{normalized_cut_threshold}
+    \cgalParamDescription{two clusters merge only if the normalized cut between them is at least this (larger: more, smaller clusters)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0.002`}
+    \cgalParamExtra{must be non-negative}
+  \cgalParamNEnd
+  \cgalParamNBegin{height_image_sigma}
+    \cgalParamDescription{the standard deviation of the smaller Gaussian of the difference of Gaussians (the larger one is three times wider), in metres}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0.2`}
+    \cgalParamExtra{must be positive}
+  \cgalParamNEnd
+  \cgalParamNBegin{height_image_threshold}
+    \cgalParamDescription{the response of the difference of Gaussians above which a cell belongs to an object, in metres}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0.02`}
+    \cgalParamExtra{must be finite}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the largest number of threads (0: TBB's choice, 1: the calling thread only)}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`0`}
+  \cgalParamNEnd
   \cgalParamNBegin{minimum_cluster_size}
     \cgalParamDescription{clusters with fewer points are rejected}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`20`}
+    \cgalParamDefault{`10`}
   \cgalParamNEnd
   \cgalParamNBegin{maximum_cluster_height}
     \cgalParamDescription{clusters with a larger vertical extent are rejected, in metres}
@@ -131,71 +298,42 @@ cluster gives one location, the mean \f$(x, y)\f$ of its points at the height of
 \returns the locations (sorted by \f$x\f$, then \f$y\f$) and the location of every point
 
 \throws CGAL::Shape_analysis::Bad_input if a coordinate is not finite, a parameter is out of its
-        range, or the points spread over more than two million voxels along an axis
+        range, the points spread over more than two million voxels along an axis, or the height
+        image would have more than \f$2 \cdot 10^8\f$ cells (process the scene in tiles)
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 Localization_result locate_objects(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
   namespace SAI = CGAL::Shape_analysis::internal;
   namespace snp = CGAL::Shape_analysis::internal_np;
-  const double spacing = SAI::parameter_value<double>(np, snp::component_spacing_tag, 0.3);
-  const std::size_t minimum = SAI::parameter_value<std::size_t>(np, snp::minimum_cluster_size_tag, std::size_t(20));
-  const double tallest = SAI::parameter_value<double>(np, snp::maximum_cluster_height_tag, 12.0);
-  const Localization_method method = SAI::parameter_value<Localization_method>(
-    np, snp::localization_method_tag, Localization_method::CONNECTED_COMPONENTS);
-  const double shift_radius = SAI::parameter_value<double>(np, snp::mean_shift_radius_tag, 2.0);
-  if(!(shift_radius > 0) || !std::isfinite(shift_radius))
+  internal::Localization_options o;
+  o.spacing = SAI::parameter_value<double>(np, snp::component_spacing_tag, 0.3);
+  o.minimum = SAI::parameter_value<std::size_t>(np, snp::minimum_cluster_size_tag, std::size_t(10));
+  o.tallest = SAI::parameter_value<double>(np, snp::maximum_cluster_height_tag, 12.0);
+  o.method = SAI::parameter_value<Localization_method>(np, snp::localization_method_tag,
+                                                       Localization_method::CONNECTED_COMPONENTS);
+  o.shift_radius = SAI::parameter_value<double>(np, snp::mean_shift_radius_tag, 2.0);
+  o.cell = SAI::parameter_value<double>(np, snp::localization_cell_size_tag, 0.15);
+  o.cut_threshold = SAI::parameter_value<double>(np, snp::normalized_cut_threshold_tag, 0.002);
+  o.sigma = SAI::parameter_value<double>(np, snp::height_image_sigma_tag, 0.2);
+  o.image_threshold = SAI::parameter_value<double>(np, snp::height_image_threshold_tag, 0.02);
+  o.threads = SAI::parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
+  const auto positive = [](double v) { return v > 0 && std::isfinite(v); };
+  if(!positive(o.shift_radius))
     throw Bad_input("locate_objects: mean_shift_radius must be a positive number");
-  if(!(spacing > 0) || !std::isfinite(spacing))
+  if(!positive(o.spacing))
     throw Bad_input("locate_objects: component_spacing must be a positive number");
-  if(!(tallest > 0) || !std::isfinite(tallest))
+  if(!positive(o.tallest))
     throw Bad_input("locate_objects: maximum_cluster_height must be a positive number");
-
-  const std::vector<std::array<double, 3>> p = internal::point_arrays(points, np);
-  Localization_result r;
-  r.location_of_point.assign(p.size(), Localization_result::no_location);
-  if(p.empty())
-    return r;
-  std::array<double, 3> lo, hi;
-  const bool shift = method == Localization_method::MEAN_SHIFT;
-  internal::checked_bounds(p, shift ? shift_radius / 2 : spacing, "locate_objects", lo, hi);
-  std::size_t clusters = 0;
-  const std::vector<std::uint32_t> cluster =
-    shift ? internal::mean_shift_clusters(p, shift_radius, lo, clusters)
-          : internal::voxel_components(p, std::vector<char>(p.size(), 1), spacing, lo, clusters);
-  r.number_of_clusters = clusters;
-  // Per cluster: count, sum of x and y, lowest and highest z.
-  std::vector<std::size_t> count(clusters, 0);
-  std::vector<std::array<double, 4>> acc(clusters, {0, 0, std::numeric_limits<double>::infinity(),
-                                                    -std::numeric_limits<double>::infinity()});
-  for(std::size_t i = 0; i < p.size(); ++i) {
-    auto& a = acc[cluster[i]];
-    ++count[cluster[i]];
-    a[0] += p[i][0], a[1] += p[i][1];
-    a[2] = (std::min)(a[2], p[i][2]), a[3] = (std::max)(a[3], p[i][2]);
-  }
-  std::vector<std::pair<Object_location, std::size_t>> kept; // with its cluster
-  for(std::size_t c = 0; c < clusters; ++c) {
-    const double height = acc[c][3] - acc[c][2];
-    if(count[c] < minimum || height > tallest)
-      continue;
-    Object_location l;
-    l.position = {acc[c][0] / double(count[c]), acc[c][1] / double(count[c]), acc[c][2]};
-    l.number_of_points = count[c];
-    l.height = height;
-    kept.emplace_back(l, c);
-  }
-  std::sort(kept.begin(), kept.end(), [](const auto& a, const auto& b) {
-    return std::tie(a.first.position[0], a.first.position[1]) < std::tie(b.first.position[0], b.first.position[1]);
-  });
-  std::vector<std::size_t> location_of_cluster(clusters, Localization_result::no_location);
-  for(std::size_t k = 0; k < kept.size(); ++k) {
-    r.locations.push_back(kept[k].first);
-    location_of_cluster[kept[k].second] = k;
-  }
-  for(std::size_t i = 0; i < p.size(); ++i)
-    r.location_of_point[i] = location_of_cluster[cluster[i]];
-  return r;
+  if(!positive(o.cell))
+    throw Bad_input("locate_objects: localization_cell_size must be a positive number");
+  if(!(o.cut_threshold >= 0) || !std::isfinite(o.cut_threshold))
+    throw Bad_input("locate_objects: normalized_cut_threshold must be a non-negative number");
+  if(!positive(o.sigma))
+    throw Bad_input("locate_objects: height_image_sigma must be a positive number");
+  if(!std::isfinite(o.image_threshold))
+    throw Bad_input("locate_objects: height_image_threshold must be a finite number");
+  return internal::locate_objects(internal::point_arrays(points, np), o);
 }
 
 /// \ingroup PkgPointSetObjectRecognitionRef

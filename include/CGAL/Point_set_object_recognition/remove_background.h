@@ -129,6 +129,72 @@ inline bool fit_plane(const std::vector<std::array<double, 3>>& p, const std::ve
   return std::isfinite(plane[2]);
 }
 
+// Per connected component of the selected points: its horizontal box and its lowest and highest
+// heights above the ground.
+struct Component_box
+{
+  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, low = x0;
+  double x1 = -std::numeric_limits<double>::infinity(), y1 = x1, high = x1;
+  double width() const { return std::hypot(x1 - x0, y1 - y0); } // the horizontal diagonal
+};
+
+inline std::vector<Component_box> component_boxes(const std::vector<std::array<double, 3>>& p,
+                                                  const std::vector<double>& height,
+                                                  const std::vector<char>& selected,
+                                                  const std::vector<std::uint32_t>& component,
+                                                  std::size_t components)
+{
+  std::vector<Component_box> box(components);
+  for(std::size_t i = 0; i < p.size(); ++i)
+    if(selected[i]) {
+      Component_box& b = box[component[i]];
+      b.x0 = (std::min)(b.x0, p[i][0]), b.y0 = (std::min)(b.y0, p[i][1]), b.low = (std::min)(b.low, height[i]);
+      b.x1 = (std::max)(b.x1, p[i][0]), b.y1 = (std::max)(b.y1, p[i][1]), b.high = (std::max)(b.high, height[i]);
+    }
+  return box;
+}
+
+// The points of large components (`large[i]` set) that do not belong to a wall: in a large
+// component, the columns (squares of side component_spacing / 2) whose points span more than
+// 2 m in height above the ground are walls. The other points of large components are grouped
+// again into connected components (voxels of side component_spacing); `large[i]` is cleared for
+// the points of the components no wider than `maximum_component_extent` and no taller than 2 m
+// that start less than 0.5 m above the ground, so that a newspaper box against a facade is kept,
+// and the remains of a facade (window sills, fragments of walls seen through gaps) are not.
+inline void peel_walls(const std::vector<std::array<double, 3>>& p, const std::vector<double>& height,
+                       const Background_options& o, const std::array<double, 3>& lo, std::vector<char>& large)
+{
+  const std::size_t n = p.size();
+  const double side = o.spacing / 2, wall_height = 2.0, grounded = 0.5;
+  std::unordered_map<std::uint64_t, std::array<double, 2>> column; // lowest, highest
+  const auto key2 = [&](std::size_t i) { return voxel_key(p[i][0], p[i][1], lo[2], side, lo); };
+  for(std::size_t i = 0; i < n; ++i)
+    if(large[i]) {
+      auto& c = column.emplace(key2(i), std::array<double, 2>{{height[i], height[i]}}).first->second;
+      c[0] = (std::min)(c[0], height[i]);
+      c[1] = (std::max)(c[1], height[i]);
+    }
+  std::vector<char> rest(n, 0);
+  bool any = false;
+  for(std::size_t i = 0; i < n; ++i)
+    if(large[i]) {
+      const auto& c = column[key2(i)];
+      rest[i] = c[1] - c[0] > wall_height ? 0 : 1;
+      any = any || rest[i];
+    }
+  if(!any)
+    return;
+  std::size_t components = 0;
+  const std::vector<std::uint32_t> component = voxel_components(p, rest, o.spacing, lo, components);
+  const std::vector<Component_box> box = component_boxes(p, height, rest, component, components);
+  for(std::size_t i = 0; i < n; ++i)
+    if(rest[i]) {
+      const Component_box& b = box[component[i]];
+      if(!(b.width() > o.extent) && b.low < grounded && b.high - b.low <= wall_height)
+        large[i] = 0;
+    }
+}
+
 inline Background_removal_result remove_background(const std::vector<std::array<double, 3>>& p,
                                                    const Background_options& o)
 {
@@ -168,23 +234,46 @@ inline Background_removal_result remove_background(const std::vector<std::array<
   g.planes.assign(cells, {0, 0, 0});
   std::vector<char> valid(cells, 0);
   std::vector<double> zs;
-  std::vector<std::size_t> near;
+  std::vector<std::size_t> near, lowest;
+  // The fits see only the lowest point of each column of side cell / 16: a wall or an object
+  // standing on the ground then weighs no more than the ground beside it (their bottom rows
+  // would otherwise lift the plane towards them).
+  constexpr std::size_t columns = 16;
+  std::vector<std::size_t> column_point(columns * columns);
+  const std::size_t none = std::size_t(-1);
   for(std::size_t c = 0; c < cells; ++c) {
     const std::size_t b = start[c], e = start[c + 1];
     if(e - b < 3)
       continue;
+    const double xa = g.x0 + double(c % g.nx) * o.cell, ya = g.y0 + double(c / g.nx) * o.cell;
+    std::fill(column_point.begin(), column_point.end(), none);
+    for(std::size_t k = b; k < e; ++k) {
+      const std::size_t i = order[k];
+      const auto sub = [&](double t) {
+        return (std::min)(columns - 1, std::size_t((std::max)(0.0, t) * double(columns) / o.cell));
+      };
+      std::size_t& best = column_point[sub(p[i][0] - xa) + columns * sub(p[i][1] - ya)];
+      if(best == none || p[i][2] < p[best][2] || (p[i][2] == p[best][2] && i < best))
+        best = i;
+    }
+    lowest.clear();
+    for(std::size_t i : column_point)
+      if(i != none)
+        lowest.push_back(i);
+    std::sort(lowest.begin(), lowest.end());
+    if(lowest.size() < 3)
+      continue;
     zs.clear();
-    for(std::size_t k = b; k < e; ++k)
-      zs.push_back(p[order[k]][2]);
+    for(std::size_t i : lowest)
+      zs.push_back(p[i][2]);
     const std::size_t q = (zs.size() - 1) / 20; // the 5th percentile: below it, noise
     std::nth_element(zs.begin(), zs.begin() + long(q), zs.end());
     std::array<double, 3> plane{{0, 0, zs[q]}};
     bool fitted = false;
-    const double cx = g.x0 + (double(c % g.nx) + 0.5) * o.cell, cy = g.y0 + (double(c / g.nx) + 0.5) * o.cell;
+    const double cx = xa + 0.5 * o.cell, cy = ya + 0.5 * o.cell;
     for(double band : {1.0, 0.5, 0.3, 0.2}) {
       near.clear();
-      for(std::size_t k = b; k < e; ++k) {
-        const std::size_t i = order[k];
+      for(std::size_t i : lowest) {
         const double d = p[i][2] - (plane[0] * p[i][0] + plane[1] * p[i][1] + plane[2]);
         if(d > -band && d < band)
           near.push_back(i);
@@ -303,21 +392,18 @@ inline Background_removal_result remove_background(const std::vector<std::array<
     remaining[i] = r.kind[i] == Point_kind::FOREGROUND;
   std::size_t components = 0;
   const std::vector<std::uint32_t> component = voxel_components(p, remaining, o.spacing, lo, components);
-  std::vector<std::array<double, 4>> box(components, {std::numeric_limits<double>::infinity(),
-                                                      std::numeric_limits<double>::infinity(),
-                                                      -std::numeric_limits<double>::infinity(),
-                                                      -std::numeric_limits<double>::infinity()});
+  const std::vector<Component_box> box = component_boxes(p, r.height_above_ground, remaining, component, components);
+  std::vector<char> large(n, 0);
   for(std::size_t i = 0; i < n; ++i)
-    if(remaining[i]) {
-      auto& b = box[component[i]];
-      b[0] = (std::min)(b[0], p[i][0]), b[1] = (std::min)(b[1], p[i][1]);
-      b[2] = (std::max)(b[2], p[i][0]), b[3] = (std::max)(b[3], p[i][1]);
-    }
+    if(remaining[i])
+      large[i] = box[component[i]].width() > o.extent ? 1 : 0;
+  // 4. Small things against walls: the points of the large components outside the walls (tall
+  //    columns) are grouped again; the small groups standing on the ground stay.
+  peel_walls(p, r.height_above_ground, o, lo, large);
   for(std::size_t i = 0; i < n; ++i) {
     if(!remaining[i])
       continue;
-    const auto& b = box[component[i]];
-    if(std::hypot(b[2] - b[0], b[3] - b[1]) > o.extent) {
+    if(large[i]) {
       r.kind[i] = Point_kind::LARGE_COMPONENT;
       ++r.number_of_large_component_points;
     } else
@@ -336,7 +422,9 @@ Removes the background of a scanned urban scene (\cgalCite{Golovinskiy2010}, sec
 that what remains are candidate parts of small objects:
 
 1. <b>Ground.</b> The points are binned in a uniform grid of `ground_cell_size` in \f$(x, y)\f$.
-   In each cell a plane starts level at the 5th percentile of the heights and is refitted by
+   In each cell, only the lowest point of each of its \f$16 \times 16\f$ columns takes part (so
+   that the foot of a wall or an object does not lift the plane towards it): a plane starts level
+   at the 5th percentile of their heights and is refitted by
    least squares to the points within a band around it, the band shrinking from 1 m to 0.2 m. A
    cell whose points near that plane do not spread over it (the foot of a wall seen from the
    street, a lone object), whose ground rises above another cell's within 20 m by more than 1 m
@@ -348,7 +436,11 @@ that what remains are candidate parts of small objects:
 3. <b>Large components.</b> The other points are grouped into connected components (occupied
    voxels of side `component_spacing`, touching by a face, an edge or a corner); components whose
    horizontal bounding-box diagonal exceeds `maximum_component_extent` (buildings, long walls)
-   are removed.
+   are removed, but for the small things standing against them: in a large component, the
+   columns (squares of side `component_spacing` / 2) whose points span more than 2 m in height
+   are walls; its other points are grouped again into connected components, and those no wider
+   than `maximum_component_extent`, no taller than 2 m and starting less than 0.5 m above the
+   ground (a newspaper box against a facade) are kept.
 
 Coordinates are expected in metres with \f$z\f$ up. The result does not depend on the order of the
 points (up to the rounding of the plane fits).

@@ -64,6 +64,7 @@ namespace internal_np {
   X(coarsest_level_size_t, coarsest_level_size_tag, coarsest_level_size)             \
   X(symmetry_tolerance_t, symmetry_tolerance_tag, symmetry_tolerance)                \
   X(final_symmetry_weight_t, final_symmetry_weight_tag, final_symmetry_weight)       \
+  X(target_symmetry_error_t, target_symmetry_error_tag, target_symmetry_error)       \
   X(transfer_mode_t, transfer_mode_tag, transfer_mode)                               \
   X(source_side_t, source_side_tag, source_side)                                     \
   X(symmetric_map_t, symmetric_map_tag, symmetric_map)                               \
@@ -77,8 +78,22 @@ namespace internal_np {
   X(maximum_cluster_height_t, maximum_cluster_height_tag, maximum_cluster_height)    \
   X(localization_method_t, localization_method_tag, localization_method)             \
   X(mean_shift_radius_t, mean_shift_radius_tag, mean_shift_radius)                   \
+  X(localization_cell_size_t, localization_cell_size_tag, localization_cell_size)    \
+  X(normalized_cut_threshold_t, normalized_cut_threshold_tag, normalized_cut_threshold) \
+  X(height_image_sigma_t, height_image_sigma_tag, height_image_sigma)                \
+  X(height_image_threshold_t, height_image_threshold_tag, height_image_threshold)    \
   X(local_origin_t, local_origin_tag, local_origin)                                  \
-  X(shift_to_local_origin_t, shift_to_local_origin_tag, shift_to_local_origin)
+  X(shift_to_local_origin_t, shift_to_local_origin_tag, shift_to_local_origin) \
+  X(segmentation_method_t, segmentation_method_tag, segmentation_method)             \
+  X(background_radius_t, background_radius_tag, background_radius)                   \
+  X(foreground_height_t, foreground_height_tag, foreground_height)                   \
+  X(number_of_neighbors_t, number_of_neighbors_tag, number_of_neighbors)             \
+  X(edge_sigma_t, edge_sigma_tag, edge_sigma)                                        \
+  X(background_weight_t, background_weight_tag, background_weight)                   \
+  X(graph_cell_size_t, graph_cell_size_tag, graph_cell_size)                         \
+  X(maximum_graph_size_t, maximum_graph_size_tag, maximum_graph_size)                \
+  X(minimum_foreground_size_t, minimum_foreground_size_tag, minimum_foreground_size) \
+  X(maximum_cut_cost_t, maximum_cut_cost_tag, maximum_cut_cost)
 
 #define CGAL_SHAPE_ANALYSIS_DECLARE_TAG(X, Y, Z) enum X { Y };
 CGAL_SHAPE_ANALYSIS_NAMED_PARAMETER_LIST(CGAL_SHAPE_ANALYSIS_DECLARE_TAG)

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -284,6 +285,176 @@ private:
   const Dual_graph& m_g;
   std::vector<std::uint32_t> m_reverse;
   Bk_max_flow m_flow;
+};
+
+// s-t minimum cut with terminal capacities and hard constraints on the project's own
+// Boykov-Kolmogorov solver (Bk_max_flow), for the many small graphs of point-cloud segmentation:
+// the graph is built in compressed rows once (`reset`, `add_edge`, `set_terminal_capacity`,
+// `solve`); hard constraints added afterwards only raise capacities, so `constrain_and_resolve`
+// augments the last flow instead of starting again (interactive segmentation). Not thread-safe:
+// one object per thread.
+class Terminal_min_cut
+{
+public:
+  enum Side : char { FREE = 0, SOURCE = 1, SINK = 2 };
+
+  Terminal_min_cut() = default;
+  // The solver points to the arrays of this object: neither copied nor moved.
+  Terminal_min_cut(const Terminal_min_cut&) = delete;
+  Terminal_min_cut& operator=(const Terminal_min_cut&) = delete;
+
+  // Forgets everything; the graph will have `n` nodes plus the two terminals.
+  void reset(std::size_t n)
+  {
+    m_n = n;
+    m_edges.clear();
+    m_to_source.assign(n, 0.0);
+    m_to_sink.assign(n, 0.0);
+    m_constraint.assign(n, FREE);
+    m_built = false;
+  }
+
+  std::size_t number_of_nodes() const { return m_n; }
+
+  // An undirected edge u-v of capacity `c` (finite, non-negative), before the first solve.
+  void add_edge(std::size_t u, std::size_t v, double c) { m_edges.push_back({std::uint32_t(u), std::uint32_t(v), c}); }
+
+  // The cost of putting u on the sink side (`to_source`) and on the source side (`to_sink`).
+  void set_terminal_capacity(std::size_t u, double to_source, double to_sink)
+  {
+    m_to_source[u] = to_source;
+    m_to_sink[u] = to_sink;
+  }
+  void constrain(std::size_t u, Side s) { m_constraint[u] = s; }
+  Side constraint(std::size_t u) const { return m_constraint[u]; }
+
+  // Solves from scratch; returns the value of the cut without the hard-constraint arcs.
+  double solve()
+  {
+    if(!m_built)
+      build();
+    fill_capacities(m_capacity);
+    m_flow = m_solver->solve(m_capacity, source(), sink(), m_workspace);
+    return finite_part();
+  }
+
+  // Adds hard constraints (pairs of node and side) to the last solve and re-solves by augmenting
+  // its flow. A constraint that contradicts an earlier one (or frees a node) needs a full solve,
+  // which is then made. Returns the value of the cut as solve() does.
+  double constrain_and_resolve(const std::vector<std::pair<std::size_t, Side>>& constraints)
+  {
+    bool grows = m_built;
+    for(const auto& c : constraints)
+      if(c.second == FREE || (m_constraint[c.first] != FREE && m_constraint[c.first] != c.second))
+        grows = false;
+    for(const auto& c : constraints)
+      m_constraint[c.first] = c.second;
+    if(!grows)
+      return solve();
+    m_previous.swap(m_capacity);
+    fill_capacities(m_capacity);
+    m_flow += m_solver->solve_with_larger_capacities(m_previous, m_capacity, source(), sink(), m_workspace);
+    return finite_part();
+  }
+
+  // After a solve: whether node u is on the source side (the nodes the source reaches in the
+  // residual graph: the smallest source side of a minimum cut).
+  bool is_source_side(std::size_t u) const { return Bk_max_flow::is_source_side(m_workspace, u); }
+
+private:
+  struct Edge { std::uint32_t u, v; double c; };
+
+  Bk_max_flow::Index source() const { return Bk_max_flow::Index(m_n); }
+  Bk_max_flow::Index sink() const { return Bk_max_flow::Index(m_n + 1); }
+
+  void build()
+  {
+    if(m_n + 2 >= std::size_t(0xFFFFFFF0u) || 2 * m_edges.size() + 4 * m_n >= std::size_t(0xFFFFFFF0u))
+      throw Bad_input("min-cut: the graph is too large (at most 2^31 nodes and arcs)");
+    const std::size_t total = m_n + 2;
+    std::vector<std::size_t> degree(total + 1, 0);
+    for(const Edge& e : m_edges)
+      ++degree[e.u + 1], ++degree[e.v + 1];
+    for(std::size_t u = 0; u < m_n; ++u)
+      degree[u + 1] += 2, ++degree[m_n + 1], ++degree[m_n + 2];
+    m_first.assign(total + 1, 0);
+    for(std::size_t u = 0; u < total; ++u)
+      m_first[u + 1] = m_first[u] + degree[u + 1];
+    std::vector<std::size_t> fill(m_first.begin(), m_first.end() - 1);
+    const std::size_t arcs = m_first[total];
+    m_target.assign(arcs, 0);
+    m_reverse.assign(arcs, 0);
+    m_edge_arc.assign(m_edges.size(), 0);
+    m_terminal_arc.assign(2 * m_n, 0);
+    auto pair_arcs = [&](std::uint32_t a, std::uint32_t b) {
+      const std::size_t x = fill[a]++, y = fill[b]++;
+      m_target[x] = b, m_target[y] = a;
+      m_reverse[x] = Bk_max_flow::Index(y), m_reverse[y] = Bk_max_flow::Index(x);
+      return x;
+    };
+    for(std::size_t e = 0; e < m_edges.size(); ++e)
+      m_edge_arc[e] = pair_arcs(m_edges[e].u, m_edges[e].v);
+    for(std::size_t u = 0; u < m_n; ++u) {
+      m_terminal_arc[2 * u] = pair_arcs(source(), std::uint32_t(u)); // s -> u
+      m_terminal_arc[2 * u + 1] = pair_arcs(std::uint32_t(u), sink()); // u -> t
+    }
+    m_solver.reset(new Bk_max_flow(m_first, m_target, m_reverse));
+    // A capacity larger than any finite cut stands for infinity.
+    m_infinite = 1.0;
+    for(const Edge& e : m_edges)
+      m_infinite += 2 * checked(e.c);
+    for(std::size_t u = 0; u < m_n; ++u)
+      m_infinite += checked(m_to_source[u]) + checked(m_to_sink[u]);
+    m_infinite *= 2;
+    m_built = true;
+  }
+
+  void fill_capacities(std::vector<double>& capacity) const
+  {
+    capacity.assign(m_target.size(), 0.0);
+    for(std::size_t e = 0; e < m_edges.size(); ++e)
+      capacity[m_edge_arc[e]] = capacity[m_reverse[m_edge_arc[e]]] = m_edges[e].c;
+    for(std::size_t u = 0; u < m_n; ++u) {
+      capacity[m_terminal_arc[2 * u]] = m_constraint[u] == SOURCE ? m_infinite : m_to_source[u];
+      capacity[m_terminal_arc[2 * u + 1]] = m_constraint[u] == SINK ? m_infinite : m_to_sink[u];
+    }
+  }
+
+  // The flow minus what went through hard-constraint arcs is not the finite cut in general;
+  // the finite cut is recomputed from the sides.
+  double finite_part() const
+  {
+    double cut = 0;
+    for(const Edge& e : m_edges)
+      if(is_source_side(e.u) != is_source_side(e.v))
+        cut += e.c;
+    for(std::size_t u = 0; u < m_n; ++u) {
+      if(is_source_side(u) && m_constraint[u] != SINK)
+        cut += m_to_sink[u];
+      if(!is_source_side(u) && m_constraint[u] != SOURCE)
+        cut += m_to_source[u];
+    }
+    return cut;
+  }
+
+  static double checked(double c)
+  {
+    if(!(c >= 0) || !std::isfinite(c))
+      throw Bad_input("min-cut: capacities must be finite and non-negative");
+    return c;
+  }
+
+  std::size_t m_n = 0;
+  bool m_built = false;
+  double m_infinite = 1, m_flow = 0;
+  std::vector<Edge> m_edges;
+  std::vector<double> m_to_source, m_to_sink;
+  std::vector<Side> m_constraint;
+  std::vector<std::size_t> m_first, m_edge_arc, m_terminal_arc;
+  std::vector<Bk_max_flow::Index> m_target, m_reverse;
+  std::unique_ptr<Bk_max_flow> m_solver;
+  Bk_max_flow::Workspace m_workspace;
+  std::vector<double> m_capacity, m_previous;
 };
 
 } // namespace internal

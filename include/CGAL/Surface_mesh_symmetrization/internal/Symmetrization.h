@@ -29,7 +29,10 @@
 //     vertices of the previous one) take the steps of the schedule first (the large-scale
 //     asymmetry); each finer level is seeded by the displacements of the next coarser one,
 //     interpolated at the closest points of its surface, then takes the last steps and, on the
-//     input's resolution, the constrained ones.
+//     input's resolution, the constrained ones;
+//   - isometric refinement (finest level, while the error is above the target): linearized
+//     steps that trade the symmetry error against the relative change of the edge lengths, all
+//     three coordinates free (refine_step()), the weight of the error growing per step.
 
 #include <CGAL/Surface_mesh_symmetrization/internal/Symmetry_geometry.h>
 
@@ -78,6 +81,10 @@ struct Symmetrization_options
   double schedule_exponent = 4;           // the schedule ends at alpha / (1 - alpha) = 10^this
   std::size_t direct_solver_limit = 2000000; // vertices
   std::size_t number_of_threads = 0;
+  double target_error = 1e-4;             // relative to the diagonal: the refinement stops below it
+  std::size_t refinement_steps = 14;      // most steps of the isometric refinement
+  double refinement_ratio = 1e3;          // its first weight of the symmetry error against the edge lengths
+  std::size_t refinement_limit = 50000;   // vertices: larger meshes are not refined (their sagitta is small)
   std::function<void(double)> progress;
 };
 
@@ -466,6 +473,8 @@ public:
       }
       if(!best_x.empty())
         x.swap(best_x);
+      if(l == 0 && refinable(level))
+        refine(level, x, out);
     }
     out.points = x;
     {
@@ -609,6 +618,140 @@ private:
         if(std::isfinite(sol(Eigen::Index(i))))
           x[i][c] = sol(Eigen::Index(i));
     }
+  }
+
+  bool refinable(const Level& level) const
+  {
+    return m_o.refinement_steps > 0 && level.original.number_of_vertices() <= m_o.refinement_limit;
+  }
+
+  // The isometric refinement of the finest level, after the constrained steps: while the error
+  // is above the target, a step of refine_step() with a weight of the symmetry error that grows
+  // by sqrt(10) per step (from refinement_ratio to 1000 times it); the positions of the smallest
+  // error are kept.
+  void refine(const Level& level, std::vector<Vector_3d>& x, Symmetrization_output& out) const
+  {
+    double rho = m_o.refinement_ratio;
+    std::vector<Vector_3d> best_x = x;
+    double best_error = std::numeric_limits<double>::infinity();
+    for(std::size_t step = 0;; ++step) {
+      const Surface current{x, level.original.triangles};
+      const Surface_index index(current);
+      const auto mirrors = mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
+      const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
+      if(step > 0)
+        out.iterations.back().symmetry_error = e;
+      if(e < best_error) {
+        best_error = e;
+        best_x = x;
+      }
+      if(e <= m_o.target_error || step >= m_o.refinement_steps)
+        break;
+      refine_step(level, mirrors, rho, x);
+      out.iterations.push_back(Iteration_record{0, 1.0, 0.0});
+      rho = (std::min)(rho * std::sqrt(10.0), 1000 * m_o.refinement_ratio);
+    }
+    x.swap(best_x);
+  }
+
+  // One step of the isometric refinement: the displacements d_i of the vertices minimize the
+  // linearized
+  //   rho / (n D^2) sum_ik w_ik |r_ik + L_k d_i - sum_c b_c d_c|^2
+  //   + 1/|E| sum_e [((l_e - l0_e + u_e . (d_i - d_j)) / l0_e)^2 + eta |d_i - d_j|^2 / l0_e^2]
+  //   + mu / (n h^2) sum_i |d_i|^2,
+  // r_ik = T_k^-1(y_i) - p_ik being the mirror residual of vertex i (p_ik its mirror point, on the
+  // face of corners c with barycentric coordinates b_c), L_k the linear part of T_k^-1, l_e and
+  // l0_e the current and input lengths of edge e and u_e its direction: the symmetry error against
+  // the relative change of the edge lengths (the distortion). Bending and rigid motions of parts
+  // leave the edge lengths unchanged: the two sides meet where their triangulations do not match
+  // at the least cost in distortion, which the constrained steps (edge vectors kept) cannot do.
+  // The 3n coordinates are coupled by L_k and by the edge directions: one sparse LDL^T solve.
+  void refine_step(const Level& level, const std::vector<std::vector<Mirror>>& mirrors, double rho,
+                   std::vector<Vector_3d>& x) const
+  {
+    const std::size_t n = level.original.number_of_vertices();
+    const double D = m_diagonal;
+    const double h = m_levels.front().mean_edge > 0 ? m_levels.front().mean_edge : D;
+    const double a_err = rho / (double(n) * D * D);
+    const double a_edge = 1.0 / double((std::max)(std::size_t(1), level.edges.size()));
+    const double eta = 0.01, mu = 1e-4;
+    const double a_disp = mu / (double(n) * h * h);
+    std::vector<Triplet> tr;
+    tr.reserve(16 * 9 * n * mirrors.size() + 36 * level.edges.size() + 3 * n);
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(3 * n));
+    const auto block = [&](std::size_t u, std::size_t v, const Matrix_3d& m, double c) {
+      for(int a = 0; a < 3; ++a)
+        for(int b = 0; b < 3; ++b)
+          if(m[std::size_t(a)][b] != 0)
+            tr.emplace_back(Eigen::Index(3 * u + std::size_t(a)), Eigen::Index(3 * v + std::size_t(b)), c * m[std::size_t(a)][b]);
+    };
+    for(std::size_t k = 0; k < mirrors.size(); ++k) {
+      const Affine_3d& inv = m_inverses[k];
+      Matrix_3d L = inv.linear, Lt, LtL, I = SAI::identity_matrix();
+      for(int a = 0; a < 3; ++a)
+        for(int b = 0; b < 3; ++b) {
+          Lt[std::size_t(a)][b] = L[std::size_t(b)][a];
+          double t = 0;
+          for(int c = 0; c < 3; ++c)
+            t += L[std::size_t(c)][a] * L[std::size_t(c)][b];
+          LtL[std::size_t(a)][b] = t;
+        }
+      for(std::size_t i = 0; i < n; ++i) {
+        const Mirror& m = mirrors[k][i];
+        const double c = a_err * weight(level, k, i);
+        if(!m.found || !(c > 0))
+          continue;
+        const auto& f = level.original.triangles[m.face];
+        const Vector_3d p = x[f[0]] * m.barycentric[0] + x[f[1]] * m.barycentric[1] + x[f[2]] * m.barycentric[2];
+        const Vector_3d r = inv(x[i]) - p;
+        block(i, i, LtL, c);
+        const Vector_3d Ltr = SAI::multiply(Lt, r);
+        for(int a = 0; a < 3; ++a)
+          rhs(Eigen::Index(3 * i + std::size_t(a))) -= c * Ltr[a];
+        for(int u = 0; u < 3; ++u) {
+          const double bu = m.barycentric[std::size_t(u)];
+          block(i, f[std::size_t(u)], Lt, -c * bu);
+          block(f[std::size_t(u)], i, L, -c * bu);
+          for(int a = 0; a < 3; ++a)
+            rhs(Eigen::Index(3 * f[std::size_t(u)] + std::size_t(a))) += c * bu * r[a];
+          for(int v = 0; v < 3; ++v)
+            block(f[std::size_t(u)], f[std::size_t(v)], I, c * bu * m.barycentric[std::size_t(v)]);
+        }
+      }
+    }
+    for(const auto& e : level.edges) {
+      const Vector_3d d = x[e.first] - x[e.second];
+      const double l = d.length();
+      const double l0 = (level.original.points[e.first] - level.original.points[e.second]).length();
+      if(!(l > 0) || !(l0 > 0))
+        continue;
+      const Vector_3d g = d / (l * l0);
+      const double r = (l - l0) / l0;
+      Matrix_3d G;
+      for(int a = 0; a < 3; ++a)
+        for(int b = 0; b < 3; ++b)
+          G[std::size_t(a)][b] = g[a] * g[b] + (a == b ? eta / (l0 * l0) : 0.0);
+      block(e.first, e.first, G, a_edge);
+      block(e.second, e.second, G, a_edge);
+      block(e.first, e.second, G, -a_edge);
+      block(e.second, e.first, G, -a_edge);
+      for(int a = 0; a < 3; ++a) {
+        rhs(Eigen::Index(3 * e.first + std::size_t(a))) -= a_edge * g[a] * r;
+        rhs(Eigen::Index(3 * e.second + std::size_t(a))) += a_edge * g[a] * r;
+      }
+    }
+    for(std::size_t i = 0; i < 3 * n; ++i)
+      tr.emplace_back(Eigen::Index(i), Eigen::Index(i), a_disp);
+    Sparse A(static_cast<Eigen::Index>(3 * n), static_cast<Eigen::Index>(3 * n));
+    A.setFromTriplets(tr.begin(), tr.end());
+    Eigen::SimplicialLDLT<Sparse> ldlt(A);
+    if(ldlt.info() != Eigen::Success)
+      return;
+    const Eigen::VectorXd delta = ldlt.solve(rhs);
+    for(std::size_t i = 0; i < n; ++i)
+      for(int a = 0; a < 3; ++a)
+        if(std::isfinite(delta(Eigen::Index(3 * i + std::size_t(a)))))
+          x[i][a] += delta(Eigen::Index(3 * i + std::size_t(a)));
   }
 
   // The factorization of the last solve's matrix.

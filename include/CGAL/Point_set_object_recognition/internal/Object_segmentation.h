@@ -1,0 +1,714 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_OBJECT_SEGMENTATION_H
+#define CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_OBJECT_SEGMENTATION_H
+
+// The machinery of segment_objects.h: a graph index over the points near a set of locations
+// (nodes: cells of a grid, or the points themselves, weighted by their point counts; edges: the
+// k nearest nodes with Gaussian weights on their length), built once and shared by all objects;
+// per object, the subgraph around its location with the background penalty, hard foreground
+// seeds, optional contraction, and the s-t minimum cut (Shape_analysis/internal/Min_cut.h).
+
+#include <CGAL/Point_set_object_recognition/internal/Voxel_grid.h>
+#include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/internal/Min_cut.h>
+#include <CGAL/Shape_analysis/internal/Parallel.h>
+#include <CGAL/Shape_analysis/internal/Point_tree.h>
+#include <CGAL/Shape_analysis/internal/Vector_3d.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Point_set_object_recognition {
+namespace internal {
+
+namespace SAI = CGAL::Shape_analysis::internal;
+typedef std::array<double, 3> P3;
+
+enum class Segmentation_kind { ALL, COMPONENTS, MIN_CUT, MIN_CUT_AUTO };
+
+struct Segmentation_options
+{
+  Segmentation_kind kind = Segmentation_kind::MIN_CUT_AUTO;
+  double radius = 2;               // fixed background radius (min-cut), or radius (all, components)
+  double foreground_height = 1.2;  // height of the hard foreground above the location
+  std::size_t neighbors = 8;       // k of the kNN graph
+  double sigma = 0.8;              // edge weight exp(-(d / sigma)^2): 4 cells by default
+  double background_weight = 0.1;  // foreground reward per point at the location (data term scale)
+  double outer_factor = 10.0;      // ... times this at radius + ramp width (then hard background)
+  double ramp_width = 1.0;         // width of the second ramp (m)
+  double cell = 0.2;               // graph nodes: cells of this side; 0: the points
+  std::size_t maximum_nodes = 1000; // contraction target (0: none)
+  std::size_t seed_neighbors = 3;   // nodes nearest to the seed's node also in the hard foreground
+  std::size_t minimum_foreground = 35;
+  double maximum_cut = 0.4;
+  double spacing = 0.3;            // connected components
+  std::vector<double> radii{1, 2, 3, 4, 5}; // automatic radius
+  std::size_t threads = 0;
+};
+
+struct Segmentation_output
+{
+  std::vector<std::size_t> points; // increasing
+  double radius = 0, cut = 0, seconds = 0;
+  std::size_t seed = std::size_t(-1);
+};
+
+inline double horizontal_distance(const P3& a, const P3& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); }
+
+// The points of a cloud by columns (squares of side `side` in (x, y)), and the graph nodes of
+// the points that lie in the columns near the locations.
+class Segmentation_index
+{
+public:
+  static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+
+  Segmentation_index(const std::vector<P3>& points, const std::vector<P3>& locations, double reach,
+                     const Segmentation_options& o, bool with_graph)
+    : m_p(points), m_o(o)
+  {
+    if(points.size() >= std::size_t(none))
+      throw CGAL::Shape_analysis::Bad_input("segment_objects: too many points (at most 2^32 - 2)");
+    P3 hi;
+    checked_bounds(points, m_side, "segment_objects", m_lo, hi);
+    for(const P3& l : locations) {
+      for(double c : l)
+        if(!std::isfinite(c))
+          throw CGAL::Shape_analysis::Bad_input("segment_objects: a location is not finite");
+      if(l[0] < m_lo[0] - 1e-9 || l[0] > hi[0] + 1e-9 || l[1] < m_lo[1] - 1e-9 || l[1] > hi[1] + 1e-9)
+        throw CGAL::Shape_analysis::Bad_input("segment_objects: a location lies outside the point cloud (its "
+                                              "horizontal bounding box)");
+    }
+    // Columns near the locations.
+    std::unordered_map<std::uint64_t, char> active;
+    const long r = long(std::ceil(reach / m_side)) + 1;
+    for(const P3& l : locations) {
+      const long ci = long((l[0] - m_lo[0]) / m_side), cj = long((l[1] - m_lo[1]) / m_side);
+      for(long dj = -r; dj <= r; ++dj)
+        for(long di = -r; di <= r; ++di)
+          if(ci + di >= 0 && cj + dj >= 0)
+            active.emplace(column_key(ci + di, cj + dj), 1);
+    }
+    for(std::size_t i = 0; i < points.size(); ++i) {
+      const std::uint64_t k = column_of(points[i][0], points[i][1]);
+      if(active.count(k))
+        m_columns[k].push_back(std::uint32_t(i));
+    }
+    if(with_graph)
+      build_graph();
+  }
+
+  const std::vector<P3>& points() const { return m_p; }
+
+  // The points within `radius` of (x, y) horizontally, increasing.
+  void points_within(const P3& at, double radius, std::vector<std::uint32_t>& out) const
+  {
+    out.clear();
+    for_columns(at, radius, [&](const std::vector<std::uint32_t>& column) {
+      for(std::uint32_t i : column)
+        if(horizontal_distance(m_p[i], at) <= radius)
+          out.push_back(i);
+    }, m_columns);
+    std::sort(out.begin(), out.end());
+  }
+
+  // The graph nodes whose centroids lie within `radius` of (x, y) horizontally, increasing.
+  void nodes_within(const P3& at, double radius, std::vector<std::uint32_t>& out) const
+  {
+    out.clear();
+    for_columns(at, radius, [&](const std::vector<std::uint32_t>& column) {
+      for(std::uint32_t v : column)
+        if(horizontal_distance(m_centroid[v], at) <= radius)
+          out.push_back(v);
+    }, m_node_columns);
+    std::sort(out.begin(), out.end());
+  }
+
+  std::size_t number_of_nodes() const { return m_count.size(); }
+  const P3& centroid(std::size_t v) const { return m_centroid[v]; }
+  double count(std::size_t v) const { return m_count[v]; }
+  std::uint32_t node_of_point(std::size_t i) const { return m_node_of_point[i]; }
+  template <typename F> void for_members(std::size_t v, const F& f) const
+  {
+    for(std::size_t k = m_member_first[v]; k < m_member_first[v + 1]; ++k)
+      f(m_members[k]);
+  }
+  template <typename F> void for_adjacent(std::size_t v, const F& f) const
+  {
+    for(std::size_t k = m_adjacent_first[v]; k < m_adjacent_first[v + 1]; ++k)
+      f(m_adjacent[k], m_adjacent_weight[k]);
+  }
+
+private:
+  static std::uint64_t column_key(long i, long j) { return std::uint64_t(i) | (std::uint64_t(j) << 32); }
+  std::uint64_t column_of(double x, double y) const
+  {
+    return column_key(long((x - m_lo[0]) / m_side), long((y - m_lo[1]) / m_side));
+  }
+  template <typename F, typename Map>
+  void for_columns(const P3& at, double radius, const F& f, const Map& map) const
+  {
+    const long i0 = (std::max)(0L, long(std::floor((at[0] - radius - m_lo[0]) / m_side)));
+    const long i1 = long(std::floor((at[0] + radius - m_lo[0]) / m_side));
+    const long j0 = (std::max)(0L, long(std::floor((at[1] - radius - m_lo[1]) / m_side)));
+    const long j1 = long(std::floor((at[1] + radius - m_lo[1]) / m_side));
+    for(long j = j0; j <= j1; ++j)
+      for(long i = i0; i <= i1; ++i) {
+        const auto it = map.find(column_key(i, j));
+        if(it != map.end())
+          f(it->second);
+      }
+  }
+
+  void build_graph()
+  {
+    // Nodes: the cells of side `cell` (or the points), numbered by their first point.
+    std::vector<std::uint32_t> active;
+    for(const auto& c : m_columns)
+      active.insert(active.end(), c.second.begin(), c.second.end());
+    std::sort(active.begin(), active.end());
+    m_node_of_point.assign(m_p.size(), none);
+    std::vector<std::uint32_t> first_of_node;
+    std::unordered_map<std::uint64_t, std::uint32_t> cell; // with cells: key -> node
+    if(m_o.cell > 0) {
+      cell.reserve(active.size() / 4 + 16);
+      for(std::uint32_t i : active) {
+        const auto ins = cell.emplace(voxel_key(m_p[i][0], m_p[i][1], m_p[i][2], m_o.cell, m_lo),
+                                      std::uint32_t(first_of_node.size()));
+        if(ins.second)
+          first_of_node.push_back(i);
+        m_node_of_point[i] = ins.first->second;
+      }
+    } else
+      for(std::uint32_t i : active) {
+        m_node_of_point[i] = std::uint32_t(first_of_node.size());
+        first_of_node.push_back(i);
+      }
+    const std::size_t n = first_of_node.size();
+    m_member_first.assign(n + 1, 0);
+    for(std::uint32_t i : active)
+      ++m_member_first[m_node_of_point[i] + 1];
+    for(std::size_t v = 0; v < n; ++v)
+      m_member_first[v + 1] += m_member_first[v];
+    m_members.assign(active.size(), 0);
+    {
+      std::vector<std::size_t> fill(m_member_first.begin(), m_member_first.end() - 1);
+      for(std::uint32_t i : active)
+        m_members[fill[m_node_of_point[i]]++] = i;
+    }
+    m_centroid.assign(n, P3{{0, 0, 0}});
+    m_count.assign(n, 0);
+    for(std::size_t v = 0; v < n; ++v) {
+      P3 c{{0, 0, 0}};
+      for_members(v, [&](std::uint32_t i) {
+        for(int a = 0; a < 3; ++a)
+          c[a] += m_p[i][a];
+      });
+      const double k = double(m_member_first[v + 1] - m_member_first[v]);
+      m_centroid[v] = {c[0] / k, c[1] / k, c[2] / k};
+      m_count[v] = k;
+      m_node_columns[column_of(m_centroid[v][0], m_centroid[v][1])].push_back(std::uint32_t(v));
+    }
+    // Edges: the k nearest nodes of every node, symmetrized, with weights
+    // exp(-(d / sigma)^2) times the smaller point count of their two nodes. With cells, the
+    // nearest are looked for among the nodes of the 3 x 3 x 3 cells around, then of larger blocks
+    // while they hold fewer than k others (up to 7 x 7 x 7: a node farther than three cells is no
+    // neighbour). Without, in a kd-tree.
+    const int maximum_reach = 3;
+    std::vector<SAI::Vector_3d> c(n);
+    std::vector<std::uint32_t> ids(n);
+    for(std::size_t v = 0; v < n; ++v) {
+      c[v] = SAI::Vector_3d(m_centroid[v][0], m_centroid[v][1], m_centroid[v][2]);
+      ids[v] = std::uint32_t(v);
+    }
+    const std::size_t k = m_o.neighbors;
+    std::vector<std::uint32_t> knn(n * k, none);
+    SAI::Point_tree tree;
+    if(m_o.cell <= 0)
+      tree = SAI::Point_tree(c, ids);
+    SAI::Parallel_workspaces<std::vector<std::pair<double, std::uint32_t>>> parallel(m_o.threads);
+    const std::size_t block = 256;
+    parallel.for_each(0, (n + block - 1) / block, [&](std::size_t b, std::vector<std::pair<double, std::uint32_t>>& r) {
+      for(std::size_t v = b * block; v < (std::min)(n, (b + 1) * block); ++v) {
+        if(m_o.cell > 0) {
+          r.clear();
+          const P3& q = m_p[first_of_node[v]];
+          const std::uint64_t key = voxel_key(q[0], q[1], q[2], m_o.cell, m_lo);
+          for(int reach = 1; reach <= maximum_reach; ++reach) {
+            for(int dk = -reach; dk <= reach; ++dk)
+              for(int dj = -reach; dj <= reach; ++dj)
+                for(int di = -reach; di <= reach; ++di) {
+                  if((std::max)((std::max)(std::abs(di), std::abs(dj)), std::abs(dk)) < reach)
+                    continue; // the inner blocks were done
+                  const auto it = cell.find(voxel_neighbor(key, di, dj, dk));
+                  if(it != cell.end() && it->second != v)
+                    r.emplace_back((c[it->second] - c[v]).squared_length(), it->second);
+                }
+            if(r.size() >= k)
+              break;
+          }
+          const std::size_t m = (std::min)(k, r.size());
+          std::partial_sort(r.begin(), r.begin() + long(m), r.end());
+          for(std::size_t j = 0; j < m; ++j)
+            knn[v * k + j] = r[j].second;
+        } else {
+          tree.k_nearest(c[v], k + 1, r);
+          std::size_t m = 0;
+          for(const auto& q : r)
+            if(q.second != v && m < k)
+              knn[v * k + m++] = q.second;
+        }
+      }
+    });
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    pairs.reserve(n * k);
+    for(std::size_t v = 0; v < n; ++v)
+      for(std::size_t m = 0; m < k; ++m) {
+        const std::uint32_t u = knn[v * k + m];
+        if(u != none)
+          pairs.emplace_back((std::min)(std::uint32_t(v), u), (std::max)(std::uint32_t(v), u));
+      }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    m_adjacent_first.assign(n + 1, 0);
+    for(const auto& e : pairs)
+      ++m_adjacent_first[e.first + 1], ++m_adjacent_first[e.second + 1];
+    for(std::size_t v = 0; v < n; ++v)
+      m_adjacent_first[v + 1] += m_adjacent_first[v];
+    m_adjacent.assign(2 * pairs.size(), 0);
+    m_adjacent_weight.assign(2 * pairs.size(), 0);
+    std::vector<std::size_t> fill(m_adjacent_first.begin(), m_adjacent_first.end() - 1);
+    const double s2 = m_o.sigma * m_o.sigma;
+    for(const auto& e : pairs) {
+      const double d2 = (c[e.first] - c[e.second]).squared_length();
+      const double w = std::exp(-d2 / s2) * (std::min)(m_count[e.first], m_count[e.second]);
+      m_adjacent[fill[e.first]] = e.second, m_adjacent_weight[fill[e.first]++] = w;
+      m_adjacent[fill[e.second]] = e.first, m_adjacent_weight[fill[e.second]++] = w;
+    }
+  }
+
+  const std::vector<P3>& m_p;
+  const Segmentation_options& m_o;
+  double m_side = 1.0;
+  P3 m_lo{{0, 0, 0}};
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> m_columns, m_node_columns;
+  std::vector<std::uint32_t> m_node_of_point, m_members, m_adjacent;
+  std::vector<std::size_t> m_member_first, m_adjacent_first;
+  std::vector<P3> m_centroid;
+  std::vector<double> m_count, m_adjacent_weight;
+};
+
+// A small graph of one object: nodes with a penalty (to the sink) and a hard side, weighted
+// edges; contracted by heavy-edge matching.
+struct Object_graph
+{
+  std::vector<double> reward, penalty, points, cells; // per node: foreground reward (to the source), background
+                                                      // penalty (to the sink), point count, fine nodes
+  std::vector<char> seed;                     // per node: hard foreground
+  std::vector<std::array<std::uint32_t, 2>> edges;
+  std::vector<double> weight;
+  std::vector<std::uint32_t> coarse; // per fine node: its node after contraction
+
+  void clear()
+  {
+    reward.clear(), penalty.clear(), points.clear(), cells.clear(), seed.clear(), edges.clear(), weight.clear(), coarse.clear();
+  }
+
+  // Merges pairs of nodes joined by their heaviest edge (seeds only with seeds) until at most
+  // `target` nodes remain or a round merges less than 5% of them.
+  void contract(std::size_t target)
+  {
+    const std::size_t fine = penalty.size();
+    coarse.resize(fine);
+    std::iota(coarse.begin(), coarse.end(), 0u);
+    std::vector<std::size_t> first;
+    std::vector<std::pair<std::uint32_t, double>> adjacent;
+    std::vector<std::uint32_t> mate, rename;
+    while(target > 0 && penalty.size() > target) {
+      const std::size_t n = penalty.size();
+      first.assign(n + 1, 0);
+      for(const auto& e : edges)
+        ++first[e[0] + 1], ++first[e[1] + 1];
+      for(std::size_t v = 0; v < n; ++v)
+        first[v + 1] += first[v];
+      adjacent.resize(2 * edges.size());
+      {
+        std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+        for(std::size_t e = 0; e < edges.size(); ++e) {
+          adjacent[fill[edges[e][0]]++] = {edges[e][1], weight[e]};
+          adjacent[fill[edges[e][1]]++] = {edges[e][0], weight[e]};
+        }
+      }
+      const std::uint32_t unmatched = std::numeric_limits<std::uint32_t>::max();
+      mate.assign(n, unmatched);
+      std::size_t merges = 0;
+      for(std::size_t v = 0; v < n && n - merges > target; ++v) {
+        if(mate[v] != unmatched)
+          continue;
+        std::uint32_t best = unmatched;
+        double best_w = 0;
+        for(std::size_t a = first[v]; a < first[v + 1]; ++a) {
+          const std::uint32_t u = adjacent[a].first;
+          if(u == v || mate[u] != unmatched || seed[u] != seed[v])
+            continue;
+          if(adjacent[a].second > best_w || (adjacent[a].second == best_w && u < best)) {
+            best_w = adjacent[a].second;
+            best = u;
+          }
+        }
+        if(best == unmatched)
+          continue;
+        mate[v] = best, mate[best] = std::uint32_t(v);
+        ++merges;
+      }
+      if(merges < n / 20 + 1)
+        break;
+      rename.assign(n, unmatched);
+      std::uint32_t next = 0;
+      for(std::size_t v = 0; v < n; ++v)
+        if(rename[v] == unmatched) {
+          rename[v] = next;
+          if(mate[v] != unmatched)
+            rename[mate[v]] = next;
+          ++next;
+        }
+      std::vector<double> re(next, 0), pe(next, 0), po(next, 0), ce(next, 0);
+      std::vector<char> se(next, 0);
+      for(std::size_t v = 0; v < n; ++v) {
+        re[rename[v]] += reward[v], pe[rename[v]] += penalty[v], po[rename[v]] += points[v], ce[rename[v]] += cells[v];
+        se[rename[v]] = seed[v];
+      }
+      reward.swap(re), penalty.swap(pe), points.swap(po), cells.swap(ce), seed.swap(se);
+      // Edges: renamed, self loops dropped, parallel ones summed.
+      std::vector<std::pair<std::array<std::uint32_t, 2>, double>> merged;
+      merged.reserve(edges.size());
+      for(std::size_t e = 0; e < edges.size(); ++e) {
+        std::uint32_t a = rename[edges[e][0]], b = rename[edges[e][1]];
+        if(a == b)
+          continue;
+        if(a > b)
+          std::swap(a, b);
+        merged.push_back({{{a, b}}, weight[e]});
+      }
+      std::sort(merged.begin(), merged.end(),
+                [](const auto& x, const auto& y) { return x.first < y.first; });
+      edges.clear(), weight.clear();
+      for(const auto& m : merged) {
+        if(!edges.empty() && edges.back() == m.first)
+          weight.back() += m.second;
+        else
+          edges.push_back(m.first), weight.push_back(m.second);
+      }
+      for(std::uint32_t& c : coarse)
+        c = rename[c];
+    }
+  }
+};
+
+// Per-thread buffers of the segmentation of objects.
+struct Segmentation_workspace
+{
+  SAI::Terminal_min_cut cut;
+  Object_graph graph;
+  std::vector<std::uint32_t> local_of, nodes, candidates;
+};
+
+// The data term per point at horizontal distance d from the location, for the background radius
+// R, in two linear ramps: a foreground reward (the cost of putting the point in the background)
+// falling from `background_weight` at the location to 0 at R, then a background penalty (the
+// cost of putting it in the foreground) rising from 0 at R to `outer_factor` times that weight
+// at R + ramp_width; beyond, the hard background.
+inline double foreground_reward(double d, double R, const Segmentation_options& o)
+{
+  return d < R ? o.background_weight * (1 - d / R) : 0.0;
+}
+inline double background_penalty(double d, double R, const Segmentation_options& o)
+{
+  return d <= R ? 0.0 : o.background_weight * o.outer_factor * (std::min)(1.0, (d - R) / o.ramp_width);
+}
+
+// The hard foreground: the point nearest to the vertical segment from the location up to
+// `height` above it (the thesis takes the point nearest to the segment's top; the segment
+// prefers the object to a wall right behind it), the nearest to the top among equally near
+// ones, and its three nearest neighbours, among `candidates`; empty when there is none.
+inline std::vector<std::uint32_t> foreground_seeds(const std::vector<P3>& p, const std::vector<std::uint32_t>& candidates,
+                                                   const P3& location, double height)
+{
+  std::vector<std::uint32_t> seeds;
+  if(candidates.empty())
+    return seeds;
+  const P3 target{{location[0], location[1], location[2] + height}};
+  auto d2 = [&](const P3& a, const P3& b) {
+    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+  };
+  const double z0 = (std::min)(location[2], target[2]), z1 = (std::max)(location[2], target[2]);
+  auto to_segment = [&](const P3& a) {
+    const double z = (std::min)(z1, (std::max)(z0, a[2]));
+    return d2(a, P3{{location[0], location[1], z}});
+  };
+  std::uint32_t best = candidates.front();
+  double best_d = to_segment(p[best]), best_top = d2(p[best], target);
+  for(std::uint32_t i : candidates) {
+    const double d = to_segment(p[i]), top = d2(p[i], target);
+    if(d < best_d || (d == best_d && top < best_top)) // candidates increase: ties keep the first
+      best_d = d, best_top = top, best = i;
+  }
+  std::vector<std::pair<double, std::uint32_t>> near;
+  for(std::uint32_t i : candidates)
+    if(i != best)
+      near.emplace_back(d2(p[i], p[best]), i);
+  const std::size_t m = (std::min)(near.size(), std::size_t(3));
+  std::partial_sort(near.begin(), near.begin() + long(m), near.end());
+  seeds.push_back(best);
+  for(std::size_t k = 0; k < m; ++k)
+    seeds.push_back(near[k].second);
+  return seeds;
+}
+
+// The hard foreground of the object at `location` among the points within 2 m of it (within the
+// graph of radius R when there is none).
+inline std::vector<std::uint32_t> object_seeds(const Segmentation_index& index, const P3& location, double R,
+                                               const Segmentation_options& o, std::vector<std::uint32_t>& candidates)
+{
+  index.points_within(location, (std::min)(R + o.ramp_width, 2.0), candidates);
+  if(candidates.empty())
+    index.points_within(location, R + o.ramp_width, candidates);
+  return foreground_seeds(index.points(), candidates, location, o.foreground_height);
+}
+
+// One min-cut at background radius R: fills `w.graph` (and w.nodes, the index's nodes of the
+// graph), solves, and returns the foreground nodes (indices into w.nodes) with the cut cost:
+// the weight of the edges cut, inside the graph and to the hard background beyond it, over the
+// mean point count of the foreground's nodes (so that with one point per node it is the plain
+// sum of the Gaussian weights cut).
+struct Cut_outcome
+{
+  std::vector<std::uint32_t> foreground; // positions in w.nodes
+  double cut = 0;
+  std::size_t points = 0;
+};
+
+inline void build_object_graph(const Segmentation_index& index, const P3& location, double R,
+                               const std::vector<std::uint32_t>& seed_points, const Segmentation_options& o,
+                               Segmentation_workspace& w, std::vector<double>& outside)
+{
+  index.nodes_within(location, R + o.ramp_width, w.nodes);
+  if(w.local_of.size() < index.number_of_nodes())
+    w.local_of.assign(index.number_of_nodes(), Segmentation_index::none);
+  for(std::size_t k = 0; k < w.nodes.size(); ++k)
+    w.local_of[w.nodes[k]] = std::uint32_t(k);
+  Object_graph& g = w.graph;
+  g.clear();
+  const std::size_t n = w.nodes.size();
+  g.reward.resize(n), g.penalty.resize(n), g.points.resize(n), g.cells.assign(n, 1.0), g.seed.assign(n, 0);
+  outside.assign(n, 0.0);
+  for(std::size_t k = 0; k < n; ++k) {
+    const std::uint32_t v = w.nodes[k];
+    g.points[k] = index.count(v);
+    const double d = horizontal_distance(index.centroid(v), location);
+    g.reward[k] = index.count(v) * foreground_reward(d, R, o);
+    g.penalty[k] = index.count(v) * background_penalty(d, R, o);
+    index.for_adjacent(v, [&](std::uint32_t u, double weight) {
+      const std::uint32_t l = w.local_of[u];
+      if(l == Segmentation_index::none)
+        outside[k] += weight;
+      else if(l > k)
+        g.edges.push_back({{std::uint32_t(k), l}}), g.weight.push_back(weight);
+    });
+    g.penalty[k] += outside[k];
+  }
+  // The hard foreground: the nodes of the seed points and, with cells, the `seed_neighbors`
+  // nodes nearest to the first one (the thesis' point and its three neighbours, on nodes).
+  std::vector<std::uint32_t> seed_nodes;
+  for(std::uint32_t i : seed_points)
+    seed_nodes.push_back(index.node_of_point(i));
+  if(!seed_points.empty() && o.cell > 0 && seed_nodes.front() != Segmentation_index::none) {
+    const std::uint32_t v0 = seed_nodes.front();
+    std::vector<std::pair<double, std::uint32_t>> near;
+    index.for_adjacent(v0, [&](std::uint32_t u, double) {
+      const P3& a = index.centroid(u);
+      const P3& b = index.centroid(v0);
+      near.emplace_back((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]), u);
+    });
+    std::sort(near.begin(), near.end());
+    for(std::size_t k = 0; k < near.size() && k < o.seed_neighbors; ++k)
+      seed_nodes.push_back(near[k].second);
+  }
+  for(std::uint32_t v : seed_nodes)
+    if(v != Segmentation_index::none && w.local_of[v] != Segmentation_index::none)
+      g.seed[w.local_of[v]] = 1;
+  for(std::uint32_t v : w.nodes)
+    w.local_of[v] = Segmentation_index::none;
+}
+
+// The nodes of the source side connected to a seed through edges of the source side: the
+// foreground (the reward of the data term would otherwise add any separate cluster within the
+// radius for free).
+inline std::vector<char> connected_to_seeds(std::size_t n, const std::vector<std::array<std::uint32_t, 2>>& edges,
+                                            const std::vector<char>& seed, const std::vector<char>& source_side)
+{
+  std::vector<std::size_t> first(n + 1, 0);
+  for(const auto& e : edges)
+    if(source_side[e[0]] && source_side[e[1]])
+      ++first[e[0] + 1], ++first[e[1] + 1];
+  for(std::size_t v = 0; v < n; ++v)
+    first[v + 1] += first[v];
+  std::vector<std::uint32_t> adjacent(first[n]);
+  {
+    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    for(const auto& e : edges)
+      if(source_side[e[0]] && source_side[e[1]])
+        adjacent[fill[e[0]]++] = e[1], adjacent[fill[e[1]]++] = e[0];
+  }
+  std::vector<char> reached(n, 0);
+  std::vector<std::uint32_t> stack;
+  for(std::size_t v = 0; v < n; ++v)
+    if(seed[v] && source_side[v])
+      reached[v] = 1, stack.push_back(std::uint32_t(v));
+  while(!stack.empty()) {
+    const std::uint32_t v = stack.back();
+    stack.pop_back();
+    for(std::size_t a = first[v]; a < first[v + 1]; ++a)
+      if(!reached[adjacent[a]])
+        reached[adjacent[a]] = 1, stack.push_back(adjacent[a]);
+  }
+  return reached;
+}
+
+inline Cut_outcome min_cut_at_radius(const Segmentation_index& index, const P3& location, double R,
+                                     const std::vector<std::uint32_t>& seed_points, const Segmentation_options& o,
+                                     Segmentation_workspace& w)
+{
+  std::vector<double> outside;
+  build_object_graph(index, location, R, seed_points, o, w, outside);
+  Object_graph& g = w.graph;
+  const std::size_t fine = g.penalty.size();
+  // Per fine node, the weight to the hard background beyond the graph (already in its penalty).
+  std::vector<double> fine_outside = outside;
+  g.contract(o.maximum_nodes);
+  if(g.coarse.empty()) {
+    g.coarse.resize(fine);
+    std::iota(g.coarse.begin(), g.coarse.end(), 0u);
+  }
+  const std::size_t n = g.penalty.size();
+  std::vector<double> coarse_outside(n, 0.0);
+  for(std::size_t k = 0; k < fine; ++k)
+    coarse_outside[g.coarse[k]] += fine_outside[k];
+  SAI::Terminal_min_cut& cut = w.cut;
+  cut.reset(n);
+  for(std::size_t e = 0; e < g.edges.size(); ++e)
+    cut.add_edge(g.edges[e][0], g.edges[e][1], g.weight[e]);
+  for(std::size_t k = 0; k < n; ++k) {
+    cut.set_terminal_capacity(k, g.reward[k], g.penalty[k]);
+    if(g.seed[k])
+      cut.constrain(k, SAI::Terminal_min_cut::SOURCE);
+  }
+  cut.solve();
+  std::vector<char> source_side(n);
+  for(std::size_t k = 0; k < n; ++k)
+    source_side[k] = cut.is_source_side(k) ? 1 : 0;
+  const std::vector<char> fg = connected_to_seeds(n, g.edges, g.seed, source_side);
+  Cut_outcome r;
+  double edge_cut = 0, fg_points = 0, fg_cells = 0;
+  for(std::size_t e = 0; e < g.edges.size(); ++e)
+    if(fg[g.edges[e][0]] != fg[g.edges[e][1]])
+      edge_cut += g.weight[e];
+  for(std::size_t k = 0; k < n; ++k)
+    if(fg[k]) {
+      edge_cut += coarse_outside[k];
+      fg_points += g.points[k];
+      fg_cells += g.cells[k];
+    }
+  for(std::size_t k = 0; k < fine; ++k)
+    if(fg[g.coarse[k]])
+      r.foreground.push_back(std::uint32_t(k));
+  r.points = std::size_t(fg_points + 0.5);
+  r.cut = fg_cells > 0 ? edge_cut / (fg_points / fg_cells) : 0.0;
+  return r;
+}
+
+// Segments the object at `location` (index built with the graph for min-cut methods).
+inline Segmentation_output segment_one(const Segmentation_index& index, const P3& location,
+                                       const Segmentation_options& o, Segmentation_workspace& w)
+{
+  const auto start = std::chrono::steady_clock::now();
+  Segmentation_output out;
+  const std::vector<P3>& p = index.points();
+  if(o.kind == Segmentation_kind::ALL || o.kind == Segmentation_kind::COMPONENTS) {
+    index.points_within(location, o.radius, w.candidates);
+    const std::vector<std::uint32_t> seeds = foreground_seeds(p, w.candidates, location, o.foreground_height);
+    out.radius = o.radius;
+    if(!seeds.empty())
+      out.seed = seeds.front();
+    if(o.kind == Segmentation_kind::ALL || w.candidates.empty())
+      out.points.assign(w.candidates.begin(), w.candidates.end());
+    else {
+      std::vector<P3> q;
+      q.reserve(w.candidates.size());
+      std::size_t seed_k = 0;
+      for(std::size_t k = 0; k < w.candidates.size(); ++k) {
+        q.push_back(p[w.candidates[k]]);
+        if(w.candidates[k] == out.seed)
+          seed_k = k;
+      }
+      P3 lo, hi;
+      checked_bounds(q, o.spacing, "segment_objects", lo, hi);
+      std::size_t components = 0;
+      const std::vector<std::uint32_t> c = voxel_components(q, std::vector<char>(q.size(), 1), o.spacing, lo, components);
+      for(std::size_t k = 0; k < q.size(); ++k)
+        if(c[k] == c[seed_k])
+          out.points.push_back(w.candidates[k]);
+    }
+  } else {
+    const double largest = o.kind == Segmentation_kind::MIN_CUT ? o.radius : o.radii.back();
+    const std::vector<std::uint32_t> seeds = object_seeds(index, location, largest, o, w.candidates);
+    if(!seeds.empty()) {
+      out.seed = seeds.front();
+      const std::vector<double> fixed{o.radius};
+      const std::vector<double>& radii = o.kind == Segmentation_kind::MIN_CUT ? fixed : o.radii;
+      Cut_outcome best;
+      std::vector<std::uint32_t> best_nodes;
+      double best_radius = radii.back();
+      // The first radius whose foreground is big enough with a cut cost under the threshold;
+      // when none is, the smallest radius with a foreground big enough (a larger radius that
+      // does not give a clean cut only takes more of what the object touches), else the largest.
+      bool fallback_big = false;
+      for(double R : radii) {
+        Cut_outcome c = min_cut_at_radius(index, location, R, seeds, o, w);
+        const bool big = c.points > o.minimum_foreground;
+        if(radii.size() == 1 || (big && c.cut < o.maximum_cut)) {
+          best = std::move(c), best_nodes = w.nodes, best_radius = R;
+          break;
+        }
+        if((big && !fallback_big) || (!fallback_big && R == radii.back())) {
+          fallback_big = big;
+          best = std::move(c), best_nodes = w.nodes, best_radius = R;
+        }
+      }
+      out.radius = best_radius;
+      out.cut = best.cut;
+      for(std::uint32_t k : best.foreground)
+        index.for_members(best_nodes[k], [&](std::uint32_t i) { out.points.push_back(i); });
+      std::sort(out.points.begin(), out.points.end());
+    } else
+      out.radius = o.kind == Segmentation_kind::MIN_CUT ? o.radius : o.radii.back();
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+} // namespace internal
+} // namespace Point_set_object_recognition
+} // namespace CGAL
+
+#endif // CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_OBJECT_SEGMENTATION_H

@@ -1,0 +1,480 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+// shape_analysis points segment IN --locations locations.csv --method mincut-auto|mincut|cc|all
+//                                  [--radius r] --output objects.ply --report R.json
+// shape_analysis points evaluate --truth truth.json [--locations locations.csv] [--objects objects.ply]
+//                                 --report R.json
+//
+// Segmentation of objects from their locations in a raw scan (the ground is estimated and left
+// out internally), and the evaluation of locations and segmentations against a generated
+// scene's truth (the thesis' tables 4.1 and 4.2).
+
+#include "cli_common.h"
+
+#include <CGAL/Point_set_3.h>
+#include <CGAL/Point_set_3/IO/PLY.h>
+#include <CGAL/Point_set_object_recognition/internal/Segmentation_json.h>
+#include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
+#include <CGAL/Point_set_object_recognition/locate_objects.h>
+#include <CGAL/Point_set_object_recognition/read_point_set.h>
+#include <CGAL/Point_set_object_recognition/remove_background.h>
+#include <CGAL/Point_set_object_recognition/segment_objects.h>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <regex>
+#include <sstream>
+
+namespace shape_analysis_cli {
+
+namespace {
+
+namespace PSOR = CGAL::Point_set_object_recognition;
+namespace PSI = CGAL::Point_set_object_recognition::internal;
+
+// A location of locations.csv; z is NaN when the file leaves it empty.
+typedef std::array<double, 3> Location;
+
+std::string trim(const std::string& s)
+{
+  const std::size_t a = s.find_first_not_of(" \t\r\n"), b = s.find_last_not_of(" \t\r\n");
+  return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+}
+
+// locations.csv: a header line `x,y,z`, then one location per line (z may be empty).
+std::vector<Location> read_locations(const std::string& path)
+{
+  std::ifstream in(path);
+  if(!in)
+    throw Cli_error("cannot open " + path);
+  std::string line;
+  std::size_t number = 0;
+  std::vector<Location> r;
+  bool header = false;
+  while(std::getline(in, line)) {
+    ++number;
+    if(number == 1 && line.size() >= 3 && (unsigned char)line[0] == 0xEF)
+      line = line.substr(3); // UTF-8 byte order mark
+    const std::string t = trim(line);
+    if(t.empty())
+      continue;
+    std::vector<std::string> cells;
+    std::stringstream ss(t);
+    std::string cell;
+    while(std::getline(ss, cell, ','))
+      cells.push_back(trim(cell));
+    if(t.back() == ',')
+      cells.push_back("");
+    if(!header) {
+      if(cells.size() != 3 || cells[0] != "x" || cells[1] != "y" || cells[2] != "z")
+        throw Cli_error(path + ": line " + std::to_string(number) + ": the header must be 'x,y,z'");
+      header = true;
+      continue;
+    }
+    if(cells.size() != 3)
+      throw Cli_error(path + ": line " + std::to_string(number) + ": expected x,y,z (z may be empty)");
+    Location l;
+    for(std::size_t c = 0; c < 3; ++c) {
+      if(c == 2 && cells[c].empty()) {
+        l[c] = std::numeric_limits<double>::quiet_NaN();
+        continue;
+      }
+      std::size_t used = 0;
+      try {
+        l[c] = std::stod(cells[c], &used);
+      } catch(const std::exception&) {
+        used = 0;
+      }
+      if(used != cells[c].size() || !std::isfinite(l[c]))
+        throw Cli_error(path + ": line " + std::to_string(number) + ": '" + cells[c] + "' is not a finite number");
+    }
+    r.push_back(l);
+  }
+  if(!header)
+    throw Cli_error(path + ": empty (expected a header line 'x,y,z')");
+  return r;
+}
+
+struct Segment_options
+{
+  std::string input, locations, output, report, method = "mincut-auto";
+  double radius = 2;
+  std::size_t threads = 0;
+  bool quiet = false, verbose = false;
+};
+
+int run_segment(const Segment_options& o)
+{
+  Stopwatch total;
+  Progress progress("points segment", o.quiet, o.verbose);
+  Output_files outputs;
+  outputs.add_input(o.input);
+  outputs.add_input(o.locations);
+  require_extension(o.output, ".ply", "segmented points");
+  outputs.add_output(o.output, "segmented points");
+  outputs.add_optional_output(o.report, "report");
+  if(!(o.radius > 0) || !std::isfinite(o.radius))
+    throw Usage_error("--radius must be a positive number");
+
+  const std::vector<Location> requested = read_locations(o.locations);
+  progress.stage("reading " + o.input);
+  Stopwatch reading;
+  CGAL::Point_set_3<Point_3> points;
+  // Locations are in the file's coordinates: no shift (doubles keep UTM coordinates to 0.1 um).
+  const PSOR::Point_set_read_result read =
+    PSOR::read_point_set(o.input, points, PSOR::parameters::shift_to_local_origin(false));
+  const double read_seconds = reading.seconds();
+  if(points.empty())
+    throw Cli_error(o.input + ": the point cloud is empty");
+
+  progress.stage("estimating the ground of " + std::to_string(points.size()) + " points");
+  Stopwatch work;
+  std::vector<Point_3> all;
+  all.reserve(points.size());
+  for(auto i : points)
+    all.push_back(points.point(i));
+  const PSOR::Background_removal_result background = PSOR::remove_background(all);
+  const std::vector<std::size_t> above = PSOR::points_above_ground(background);
+  std::vector<Point_3> kept;
+  kept.reserve(above.size());
+  for(std::size_t i : above)
+    kept.push_back(all[i]);
+  std::vector<std::array<double, 3>> locations;
+  for(const Location& l : requested)
+    locations.push_back({l[0], l[1], std::isnan(l[2]) ? background.ground.height(l[0], l[1]) : l[2]});
+
+  const PSOR::Segmentation_method method = o.method == "all"     ? PSOR::Segmentation_method::ALL_WITHIN_RADIUS
+                                           : o.method == "cc"    ? PSOR::Segmentation_method::CONNECTED_COMPONENTS
+                                           : o.method == "mincut" ? PSOR::Segmentation_method::MIN_CUT
+                                                                  : PSOR::Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS;
+  progress.stage("segmenting " + std::to_string(locations.size()) + " objects among " + std::to_string(kept.size()) +
+                 " points above the ground");
+  PSOR::Segmentation_result r;
+  if(!locations.empty()) {
+    if(kept.empty())
+      throw Cli_error(o.input + ": every point is ground: nothing to segment");
+    r = PSOR::segment_objects(kept, locations,
+                              PSOR::parameters::segmentation_method(method).background_radius(o.radius).number_of_threads(
+                                o.threads));
+  }
+  const double seconds = work.seconds();
+
+  progress.stage("writing " + o.output);
+  std::vector<int> object(points.size(), -1);
+  for(std::size_t k = 0; k < above.size() && !r.object_of_point.empty(); ++k)
+    if(r.object_of_point[k] != PSOR::Segmentation_result::no_object)
+      object[above[k]] = int(r.object_of_point[k]);
+  outputs.stage(o.output, true, [&](std::ostream& out) {
+    CGAL::Point_set_3<Point_3> result = points;
+    auto object_map = result.add_property_map<int>("object", -1);
+    auto ground_map = result.add_property_map<unsigned char>("ground", 0);
+    if(!object_map.second || !ground_map.second)
+      throw Cli_error(o.input + " already has an 'object' or a 'ground' property");
+    const bool coloured = !result.has_property_map<unsigned char>("red") && !result.has_property_map<unsigned char>("green") &&
+                          !result.has_property_map<unsigned char>("blue");
+    CGAL::Point_set_3<Point_3>::Property_map<unsigned char> red, green, blue;
+    if(coloured) {
+      red = result.add_property_map<unsigned char>("red", 0).first;
+      green = result.add_property_map<unsigned char>("green", 0).first;
+      blue = result.add_property_map<unsigned char>("blue", 0).first;
+    }
+    std::size_t k = 0;
+    for(auto i : result) {
+      object_map.first[i] = object[k];
+      ground_map.first[i] = background.kind[k] == PSOR::Point_kind::GROUND ? 1 : 0;
+      if(coloured) {
+        const auto c = object[k] < 0 ? std::array<unsigned char, 3>{{160, 160, 160}} : label_colour(std::size_t(object[k]) + 1);
+        red[i] = c[0], green[i] = c[1], blue[i] = c[2];
+      }
+      ++k;
+    }
+    CGAL::IO::set_mode(out, CGAL::IO::BINARY);
+    if(!CGAL::IO::write_PLY(out, result, "written by shape_analysis points segment (CGAL Global Shape Analysis)"))
+      throw Cli_error("cannot write " + o.output);
+  });
+  if(!o.report.empty()) {
+    Json report = Json::object();
+    report["command"] = "points segment";
+    report["input"] = o.input;
+    report["format"] = read.format;
+    report["locations_file"] = o.locations;
+    report["number_of_points"] = points.size();
+    report["ground_points"] = background.number_of_ground_points;
+    report["points_above_ground"] = kept.size();
+    Json parameters = Json::object();
+    parameters["method"] = o.method;
+    parameters["radius"] = o.radius;
+    parameters["threads"] = o.threads;
+    report["parameters"] = parameters;
+    report["seconds_segmentation"] = seconds;
+    report["seconds_graph"] = r.preparation_seconds;
+    Json list = Json::array();
+    for(std::size_t k = 0; k < r.objects.size(); ++k) {
+      Json j = Json::object();
+      j["location"] = Json(std::vector<double>{locations[k][0], locations[k][1], locations[k][2]});
+      j["points"] = r.objects[k].points.size();
+      j["radius"] = r.objects[k].radius;
+      j["cut"] = r.objects[k].cut_cost;
+      j["seconds"] = r.objects[k].seconds;
+      list.push_back(j);
+    }
+    report["objects"] = list;
+    // "seconds": the whole run, reading included.
+    stage_report(outputs, o.report, report, total.seconds(), read_seconds, total.seconds(), {{"objects", o.output}});
+  }
+  outputs.commit();
+  progress.done();
+  std::size_t claimed = 0;
+  for(int v : object)
+    claimed += v >= 0;
+  std::cout << o.input << ": " << locations.size() << " objects segmented (" << claimed << " of " << points.size()
+            << " points) in " << seconds << " s\n";
+  return 0;
+}
+
+struct Truth_object
+{
+  int id = 0, object_class = 0;
+  std::string name;
+  std::array<double, 3> location{{0, 0, 0}};
+};
+
+// The objects of a truth file written by `points scene --objects` (or `points generate --truth`):
+// a JSON array of objects with "id", "class", "class_id" and "location": [x, y, z].
+std::vector<Truth_object> read_truth_objects(const std::string& path)
+{
+  std::ifstream in(path);
+  if(!in)
+    throw Cli_error("cannot open " + path);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string content = text.str();
+  const std::regex id("\"id\"\\s*:\\s*(-?[0-9]+)"), class_id("\"class_id\"\\s*:\\s*(-?[0-9]+)"),
+    name("\"class\"\\s*:\\s*\"([^\"]*)\""),
+    location("\"location\"\\s*:\\s*\\[\\s*([-+0-9.eE]+)\\s*,\\s*([-+0-9.eE]+)\\s*,\\s*([-+0-9.eE]+)");
+  std::vector<Truth_object> r;
+  std::size_t start = content.find('{');
+  while(start != std::string::npos) {
+    const std::size_t end = content.find('}', start);
+    if(end == std::string::npos)
+      throw Cli_error(path + ": an object is not closed");
+    const std::string object = content.substr(start, end - start);
+    std::smatch m;
+    Truth_object t;
+    try {
+      if(!std::regex_search(object, m, id))
+        throw Cli_error(path + ": an object has no \"id\"");
+      t.id = std::stoi(m[1].str());
+      if(!std::regex_search(object, m, location))
+        throw Cli_error(path + ": object " + std::to_string(t.id) + " has no \"location\": [x, y, z]");
+      t.location = {std::stod(m[1].str()), std::stod(m[2].str()), std::stod(m[3].str())};
+      if(std::regex_search(object, m, class_id))
+        t.object_class = std::stoi(m[1].str());
+      if(std::regex_search(object, m, name))
+        t.name = m[1].str();
+    } catch(const std::invalid_argument&) {
+      throw Cli_error(path + ": a number of object " + std::to_string(t.id) + " cannot be read");
+    } catch(const std::out_of_range&) {
+      throw Cli_error(path + ": a number of object " + std::to_string(t.id) + " is out of range");
+    }
+    r.push_back(t);
+    start = content.find('{', end);
+  }
+  if(r.empty())
+    throw Cli_error(path + ": no objects in it (write it with 'points generate --truth')");
+  return r;
+}
+
+struct Evaluate_options
+{
+  std::string truth, locations, objects, report;
+  double radius = 1;
+  bool quiet = false;
+};
+
+// An integer property of a point set, whatever its integer type in the file.
+template <typename Point_set>
+bool integer_property(const Point_set& ps, const std::string& name, std::vector<int>& values)
+{
+  values.clear();
+  auto take = [&](auto map) {
+    for(auto i : ps)
+      values.push_back(int(map[i]));
+  };
+  if(ps.template has_property_map<int>(name))
+    take(ps.template property_map<int>(name).first);
+  else if(ps.template has_property_map<unsigned char>(name))
+    take(ps.template property_map<unsigned char>(name).first);
+  else if(ps.template has_property_map<unsigned int>(name))
+    take(ps.template property_map<unsigned int>(name).first);
+  else if(ps.template has_property_map<short>(name))
+    take(ps.template property_map<short>(name).first);
+  else if(ps.template has_property_map<signed char>(name))
+    take(ps.template property_map<signed char>(name).first);
+  else
+    return false;
+  return true;
+}
+
+int run_evaluate(const Evaluate_options& o)
+{
+  Stopwatch total;
+  Output_files outputs;
+  outputs.add_input(o.truth);
+  if(!o.locations.empty())
+    outputs.add_input(o.locations);
+  if(!o.objects.empty())
+    outputs.add_input(o.objects);
+  outputs.add_optional_output(o.report, "report");
+  if(o.locations.empty() && o.objects.empty())
+    throw Usage_error("give --locations, --objects or both");
+  if(!(o.radius > 0) || !std::isfinite(o.radius))
+    throw Usage_error("--radius must be a positive number");
+  const std::vector<Truth_object> truth = read_truth_objects(o.truth);
+  std::map<int, int> class_of_instance;
+  std::map<int, std::string> class_names;
+  for(const Truth_object& t : truth) {
+    class_of_instance[t.id] = t.object_class;
+    class_names[t.object_class] = t.name.empty() ? PSI::object_class_name(t.object_class) : t.name;
+  }
+  const auto name_of = [&](int c) {
+    const auto it = class_names.find(c);
+    return it == class_names.end() ? std::to_string(c) : it->second;
+  };
+  Json report = Json::object();
+  report["command"] = "points evaluate";
+  report["truth"] = o.truth;
+  report["objects"] = truth.size();
+  Stopwatch work;
+  if(!o.locations.empty()) {
+    const std::vector<Location> found = read_locations(o.locations);
+    std::vector<PSOR::Object_location> locations;
+    for(const Location& l : found) {
+      PSOR::Object_location ol;
+      ol.position = {l[0], l[1], std::isnan(l[2]) ? 0.0 : l[2]};
+      locations.push_back(ol);
+    }
+    std::vector<std::array<double, 2>> all;
+    std::map<int, std::vector<std::array<double, 2>>> by_class;
+    for(const Truth_object& t : truth) {
+      all.push_back({t.location[0], t.location[1]});
+      by_class[t.object_class].push_back({t.location[0], t.location[1]});
+    }
+    const PSOR::Localization_evaluation e = PSOR::evaluate_locations(locations, all, o.radius);
+    Json j = Json::object();
+    j["radius"] = o.radius;
+    j["locations"] = e.number_of_locations;
+    j["correct_locations"] = e.correct_locations;
+    j["found_objects"] = e.found_objects;
+    j["precision"] = e.precision;
+    j["recall"] = e.recall;
+    Json classes = Json::array();
+    std::cout << "Localization (a location within " << o.radius << " m of an object), as the thesis' table 4.1:\n";
+    std::cout << std::left << std::setw(24) << "class" << std::right << std::setw(8) << "objects" << std::setw(8)
+              << "found" << std::setw(9) << "recall" << "\n";
+    for(const auto& c : by_class) {
+      const PSOR::Localization_evaluation ec = PSOR::evaluate_locations(locations, c.second, o.radius);
+      Json jc = Json::object();
+      jc["class"] = name_of(c.first);
+      jc["objects"] = ec.number_of_objects;
+      jc["found"] = ec.found_objects;
+      jc["recall"] = ec.recall;
+      classes.push_back(jc);
+      std::cout << std::left << std::setw(24) << name_of(c.first) << std::right << std::setw(8) << ec.number_of_objects
+                << std::setw(8) << ec.found_objects << std::setw(8) << std::fixed << std::setprecision(1)
+                << 100 * ec.recall << "%\n";
+    }
+    std::cout << std::left << std::setw(24) << "all" << std::right << std::setw(8) << e.number_of_objects << std::setw(8)
+              << e.found_objects << std::setw(8) << 100 * e.recall << "%\n"
+              << "precision " << 100 * e.precision << "% (" << e.correct_locations << " of " << e.number_of_locations
+              << " locations)\n";
+    std::cout.unsetf(std::ios::fixed);
+    j["classes"] = classes;
+    report["localization"] = j;
+  }
+  if(!o.objects.empty()) {
+    CGAL::Point_set_3<Point_3> points;
+    PSOR::read_point_set(o.objects, points, PSOR::parameters::shift_to_local_origin(false));
+    std::vector<int> object, instance, ground;
+    if(!integer_property(points, "object", object))
+      throw Cli_error(o.objects + " has no integer 'object' property (write it with 'points segment')");
+    if(!integer_property(points, "instance", instance))
+      throw Cli_error(o.objects + " has no integer 'instance' property: segment a scan written by 'points generate' "
+                                  "(its points keep their true objects)");
+    // The ground left out before segmenting is left out of the evaluation.
+    if(integer_property(points, "ground", ground))
+      for(std::size_t i = 0; i < instance.size(); ++i)
+        if(ground[i] != 0)
+          instance[i] = -1;
+    const PSOR::Segmentation_evaluation e = PSOR::evaluate_labelling(object, instance, class_of_instance);
+    std::cout << "Segmentation (points of the matched object, ground left out), as the thesis' table 4.2:\n";
+    PSOR::print_segmentation_table(std::cout, e, name_of);
+    Json j = PSI::segmentation_evaluation_json(e, name_of);
+    Json list = Json::array();
+    for(const auto& s : e.objects) {
+      Json js = Json::object();
+      js["object"] = s.object;
+      js["instance"] = s.instance;
+      js["class"] = name_of(s.object_class);
+      js["segmented_points"] = s.segmented_points;
+      js["true_points"] = s.true_points;
+      js["precision"] = s.precision;
+      js["recall"] = s.recall;
+      list.push_back(js);
+    }
+    j["per_object"] = list;
+    report["segmentation"] = j;
+  }
+  if(!o.report.empty())
+    stage_report(outputs, o.report, report, work.seconds(), 0.0, total.seconds(), {});
+  outputs.commit();
+  return 0;
+}
+
+} // namespace
+
+void add_points_segment_commands(CLI::App* points, std::function<int()>& run)
+{
+  auto s = std::make_shared<Segment_options>();
+  CLI::App* segment = points->add_subcommand(
+    "segment", "Segment the objects at given locations from a scan (its ground is estimated and left out), by "
+               "min-cut with an automatic or fixed background radius, connected components or a radius.");
+  segment->add_option("input", s->input, "The scan (.ply, .xyz, .las, .bin), metres, z up")->required();
+  segment->add_option("--locations", s->locations,
+                      "The locations (.csv: a header line x,y,z, then one location per line; an empty z is the "
+                      "ground's height)")
+    ->required();
+  segment->add_option("--method", s->method, "mincut-auto (radius 1-5 m chosen per object), mincut, cc or all")
+    ->capture_default_str()
+    ->check(CLI::IsMember({"mincut-auto", "mincut", "cc", "all"}));
+  segment->add_option("--radius", s->radius, "Background radius of mincut, radius of cc and all (m)")->capture_default_str();
+  segment->add_option("-o,--output", s->output,
+                      "The input's points in input order (.ply) with their properties, 'object' (the 0-based row "
+                      "of the location, -1 for none) and 'ground' (1: left out as ground)")
+    ->required();
+  segment->add_option("--report", s->report, "JSON report (seconds; per object: points, radius, cut, seconds)");
+  segment->add_option("--threads", s->threads, "Largest number of threads (0: all cores)")->capture_default_str();
+  segment->add_flag("-q,--quiet", s->quiet, "No progress on stderr");
+  segment->add_flag("-v,--verbose", s->verbose, "Progress on stderr even when it is not a terminal");
+  segment->callback([s, &run]() { run = [s]() { return run_segment(*s); }; });
+
+  auto e = std::make_shared<Evaluate_options>();
+  CLI::App* evaluate = points->add_subcommand(
+    "evaluate", "Evaluate locations (per class recall, precision) and segmentations (per class precision and "
+                "recall of the points) against the truth of a generated scene.");
+  evaluate->add_option("--truth", e->truth, "The true objects (.json written by 'points generate --truth')")->required();
+  evaluate->add_option("--locations", e->locations, "Locations to evaluate (.csv: x,y,z)");
+  evaluate->add_option("--objects", e->objects,
+                       "Segmented points to evaluate (.ply written by 'points segment' on a generated scan: its "
+                       "'instance' property holds the truth)");
+  evaluate->add_option("--radius", e->radius, "Largest horizontal distance of a correct location (m)")->capture_default_str();
+  evaluate->add_option("--report", e->report, "JSON report (tables 4.1 and 4.2: per class and overall)");
+  evaluate->add_flag("-q,--quiet", e->quiet, "No progress on stderr");
+  evaluate->callback([e, &run]() { run = [e]() { return run_evaluate(*e); }; });
+}
+
+} // namespace shape_analysis_cli
