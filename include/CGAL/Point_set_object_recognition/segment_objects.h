@@ -451,7 +451,8 @@ public:
   Interactive_segmenter(const Interactive_segmenter&) = delete;
   Interactive_segmenter& operator=(const Interactive_segmenter&) = delete;
 
-  /// The current segmentation (`cut_cost` and `seconds` are those of the last solve).
+  /// The current segmentation.
+  /// \returns the segmentation of the last solve (its `cut_cost` and `seconds` included)
   const Object_segmentation& segmentation() const { return m_result; }
 
   /// Constrains point `i` to the foreground and solves again.
@@ -468,6 +469,7 @@ public:
   const Object_segmentation& add_background(std::size_t i) { return add(i, false); }
 
   /// The number of points constrained so far.
+  /// \returns the number of foreground and background constraints added
   std::size_t number_of_constraints() const { return m_constrained.size(); }
 
 private:
