@@ -15,6 +15,13 @@
 //                             [--background-weight B] [--sigma S] [--max-cut C] [--cell C]
 //                             [--neighbors K] [--graph-size N]   (overrides of the defaults, to tune)
 //
+// The time per object excludes the graph shared by the objects of a call; the figures "with the
+// shared graph" add its time shared out equally among the call's objects.
+// Measured (seeds 2,3, --dense-points 4000000 --dense-length 60 --pcl-objects 60): min-cut with the
+// automatic radius 86.2% / 99.4% over 93 objects, 0.18 ms per object (median), 1.9 ms with the
+// shared graph; on PCL's 110 objects PCL 80.4% / 85.6% in 15 ms, ours 86.7% / 99.5% in 0.23 ms
+// (64 times faster; 2.0 ms and 7.5 times with the shared graph).
+//
 // The defaults were tuned on seed 1 (--seeds 1); report on other seeds. JSON to stdout and FILE, progress and
 // tables to stderr.
 
@@ -208,10 +215,10 @@ int main(int argc, char** argv)
   std::map<int, int> pooled_classes;
   int instance_offset = 0;
   std::size_t point_offset = 0;
-  std::vector<double> pooled_ms;
+  std::vector<double> pooled_ms, pooled_amortized_ms;
 #ifdef SHAPE_ANALYSIS_BENCH_WITH_PCL
   std::vector<PSOR::Object_segmentation> ours_pcl_objects, pcl_segmentations;
-  std::vector<double> ours_pcl_ms, pcl_ms;
+  std::vector<double> ours_pcl_ms, ours_pcl_amortized_ms, pcl_ms;
   std::vector<int> pcl_instance;
   std::map<int, int> pcl_classes;
   std::size_t pcl_offset = 0;
@@ -310,6 +317,7 @@ int main(int argc, char** argv)
           q += point_offset;
         pooled_segmentations.push_back(o);
         pooled_ms.push_back(1000 * o.seconds);
+        pooled_amortized_ms.push_back(1000 * (o.seconds + automatic.preparation_seconds / double(automatic.objects.size())));
       }
       for(int i : s.instance)
         pooled_instance.push_back(i > 0 ? i + instance_offset : i);
@@ -363,6 +371,9 @@ int main(int argc, char** argv)
       ours_pcl_objects.push_back(mine);
       pcl_ms.push_back(1000 * seconds);
       ours_pcl_ms.push_back(1000 * ours.seconds);
+      // With the graph shared by the street's objects (built once per call) shared out equally.
+      ours_pcl_amortized_ms.push_back(1000 * (ours.seconds + automatic.preparation_seconds /
+                                                                 double((std::max)(std::size_t(1), automatic.objects.size()))));
     }
     const int pcl_shift = int(&st - &streets[0]) * 100000;
     for(int i : s.instance)
@@ -384,13 +395,15 @@ int main(int argc, char** argv)
     Json j = evaluation_json(e);
     j["milliseconds_per_object_median"] = quantile(pooled_ms, 0.5);
     j["milliseconds_per_object_p90"] = quantile(pooled_ms, 0.9);
+    j["milliseconds_per_object_with_graph_median"] = quantile(pooled_amortized_ms, 0.5);
     j["thesis_precision"] = 0.86;
     j["thesis_recall"] = 0.93;
     j["thesis_seconds_per_object"] = 0.1;
     result["min_cut_automatic_radius_all_seeds"] = j;
     std::cerr << "all seeds, min-cut with the automatic radius, true locations:\n";
     PSOR::print_segmentation_table(std::cerr, e, class_name);
-    std::cerr << "median " << quantile(pooled_ms, 0.5) << " ms per object, p90 " << quantile(pooled_ms, 0.9) << "\n";
+    std::cerr << "median " << quantile(pooled_ms, 0.5) << " ms per object, p90 " << quantile(pooled_ms, 0.9)
+              << "; with the shared graph's time shared out: median " << quantile(pooled_amortized_ms, 0.5) << " ms\n";
   }
 #ifdef SHAPE_ANALYSIS_BENCH_WITH_PCL
   {
@@ -405,11 +418,15 @@ int main(int argc, char** argv)
     j["pcl"]["milliseconds_per_object_median"] = quantile(pcl_ms, 0.5);
     const double speedup = quantile(pcl_ms, 0.5) / (std::max)(1e-9, quantile(ours_pcl_ms, 0.5));
     j["median_speedup"] = speedup;
+    j["ours"]["milliseconds_per_object_with_graph_median"] = quantile(ours_pcl_amortized_ms, 0.5);
+    const double amortized_speedup = quantile(pcl_ms, 0.5) / (std::max)(1e-9, quantile(ours_pcl_amortized_ms, 0.5));
+    j["median_speedup_with_graph"] = amortized_speedup;
     result["pcl_min_cut_segmentation"] = j;
     std::cerr << "PCL MinCutSegmentation on " << pcl_segmentations.size() << " objects: precision " << ep.precision
               << ", recall " << ep.recall << ", " << quantile(pcl_ms, 0.5) << " ms median; ours: precision "
               << eo.precision << ", recall " << eo.recall << ", " << quantile(ours_pcl_ms, 0.5)
-              << " ms median; speed-up " << speedup << "\n";
+              << " ms median; speed-up " << speedup << "; with the shared graph's time shared out: "
+              << quantile(ours_pcl_amortized_ms, 0.5) << " ms median, speed-up " << amortized_speedup << "\n";
   }
 #endif
   const std::string text = result.dump();

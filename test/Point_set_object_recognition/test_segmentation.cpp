@@ -117,9 +117,11 @@ struct Small_street
 TEST(Segmentation, PostTouchingAWall)
 {
   // A post of 15 cm radius whose surface is 1 cm from a facade: the scanner sees about 150 of its
-  // points and tens of thousands of the facade's around it. Measured: precision 1, recall 0.25
-  // (the cut goes through the post, whose 0.2 m cells also hold facade points, rather than along
-  // its whole contact with the facade); all points within 1 m: precision under 0.02.
+  // points and tens of thousands of the facade's around it. The facade is found as a wall (its
+  // columns rise higher than 3.5 m, its high points lie along a line, the points under them are
+  // the wall's) and kept out of the graph. Measured: precision 1, recall 1 (without the walls:
+  // recall 0.25, the cut going through the post, whose 0.2 m cells also held facade points); all
+  // points within 1 m: precision under 0.02.
   Small_street street;
   PSI::urban_detail::Shape post;
   post.post(0, 0, -0.05, 2.5, 0.15);
@@ -132,8 +134,8 @@ TEST(Segmentation, PostTouchingAWall)
             << ", radius " << r.radius << ", cut " << r.cut_cost << "\n";
   ASSERT_NE(r.seed, PSOR::Object_segmentation::no_point);
   EXPECT_EQ(s.instance[r.seed], 1);
-  EXPECT_GE(pr.first, 0.8);
-  EXPECT_GE(pr.second, 0.15);
+  EXPECT_GE(pr.first, 0.9);
+  EXPECT_GE(pr.second, 0.9);
   // All points within 1 m are mostly the facade.
   const auto all = PSOR::segment_object(s.points, s.locations[0],
                                         PSOR::parameters::segmentation_method(PSOR::Segmentation_method::ALL_WITHIN_RADIUS)

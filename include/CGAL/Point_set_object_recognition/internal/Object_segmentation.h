@@ -55,6 +55,12 @@ struct Segmentation_options
   double spacing = 0.3;            // connected components
   std::vector<double> radii{1, 2, 3, 4, 5}; // automatic radius
   std::size_t threads = 0;
+  // Walls (facades): points of the columns of side `wall_column` that span more than
+  // `wall_height` of height, within `wall_tolerance` of the line fitted to the high points of such
+  // columns around when that line is long and thin (a pole or a tree is not; 0: no walls). They
+  // form their own graph nodes, with no edge to the others, and never seed the foreground.
+  double wall_height = 3.5, wall_column = 0.2, wall_tolerance = 0.05;
+  bool wall_nodes = false; // whether walls have graph nodes (the interactive segmenter's constraints)
 };
 
 struct Segmentation_output
@@ -122,15 +128,19 @@ public:
     std::sort(out.begin(), out.end());
   }
 
-  // The graph nodes whose centroids lie within `radius` of (x, y) horizontally, increasing.
-  void nodes_within(const P3& at, double radius, std::vector<std::uint32_t>& out) const
+  // The graph nodes whose centroids lie within `radius` of (x, y) horizontally, increasing; the
+  // nodes of walls only `with_walls` (they have no edges: they never join an object).
+  void nodes_within(const P3& at, double radius, std::vector<std::uint32_t>& out, bool with_walls = false) const
   {
     out.clear();
-    for_columns(at, radius, [&](const std::vector<std::uint32_t>& column) {
+    const auto add = [&](const std::vector<std::uint32_t>& column) {
       for(std::uint32_t v : column)
         if(horizontal_distance(m_centroid[v], at) <= radius)
           out.push_back(v);
-    }, m_node_columns);
+    };
+    for_columns(at, radius, add, m_node_columns);
+    if(with_walls)
+      for_columns(at, radius, add, m_wall_node_columns);
     std::sort(out.begin(), out.end());
   }
 
@@ -138,6 +148,8 @@ public:
   const P3& centroid(std::size_t v) const { return m_centroid[v]; }
   double count(std::size_t v) const { return m_count[v]; }
   std::uint32_t node_of_point(std::size_t i) const { return m_node_of_point[i]; }
+  // Whether point i was found on a wall (only with the graph).
+  bool is_wall(std::size_t i) const { return !m_wall.empty() && m_wall[i] != 0; }
   template <typename F> void for_members(std::size_t v, const F& f) const
   {
     for(std::size_t k = m_member_first[v]; k < m_member_first[v + 1]; ++k)
@@ -170,6 +182,87 @@ private:
       }
   }
 
+  // Flags the points of `active` (increasing) that lie on a wall (see Segmentation_options).
+  void find_walls(const std::vector<std::uint32_t>& active)
+  {
+    m_wall.assign(m_p.size(), 0);
+    const double s = m_o.wall_column;
+    if(!(m_o.wall_height > 0) || !(s > 0))
+      return;
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> column;
+    for(std::uint32_t i : active)
+      column[column_key(long((m_p[i][0] - m_lo[0]) / s), long((m_p[i][1] - m_lo[1]) / s))].push_back(i);
+    std::unordered_map<std::uint64_t, double> tall; // column -> its lowest height
+    for(const auto& c : column) {
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for(std::uint32_t i : c.second)
+        lo = (std::min)(lo, m_p[i][2]), hi = (std::max)(hi, m_p[i][2]);
+      if(hi - lo > m_o.wall_height)
+        tall.emplace(c.first, lo);
+    }
+    const double high = 2.0; // above the lowest point of its column: above the small objects
+    const double fine = 0.5 * m_o.wall_tolerance;
+    const auto fine_key = [&](const P3& q) {
+      return column_key(long((q[0] - m_lo[0]) / fine), long((q[1] - m_lo[1]) / fine));
+    };
+    struct Stack { double lo, hi; int n; };
+    std::unordered_map<std::uint64_t, Stack> stacks; // fine cell -> its high points of walls
+    std::unordered_map<std::uint64_t, char> high_cells;
+    const int reach = int(std::ceil(0.5 / s));
+    // Per tall column, the moments of its high points (relative to the grid's corner).
+    std::unordered_map<std::uint64_t, std::array<double, 6>> moments;
+    for(const auto& t : tall) {
+      std::array<double, 6> m{{0, 0, 0, 0, 0, 0}};
+      for(std::uint32_t i : column.find(t.first)->second)
+        if(m_p[i][2] > t.second + high) {
+          const double x = m_p[i][0] - m_lo[0], y = m_p[i][1] - m_lo[1];
+          m[0] += 1, m[1] += x, m[2] += y, m[3] += x * x, m[4] += x * y, m[5] += y * y;
+        }
+      moments.emplace(t.first, m);
+    }
+    for(const auto& t : tall) {
+      const long ci = long(t.first & 0xFFFFFFFFu), cj = long(t.first >> 32);
+      double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+      for(long dj = -reach; dj <= reach; ++dj)
+        for(long di = -reach; di <= reach; ++di) {
+          if(ci + di < 0 || cj + dj < 0)
+            continue;
+          const auto it = moments.find(column_key(ci + di, cj + dj));
+          if(it == moments.end())
+            continue;
+          const std::array<double, 6>& m = it->second;
+          n += m[0], sx += m[1], sy += m[2], sxx += m[3], sxy += m[4], syy += m[5];
+        }
+      if(n < 10)
+        continue;
+      const double mx = sx / n, my = sy / n;
+      const double a = sxx / n - mx * mx, b = sxy / n - mx * my, d = syy / n - my * my;
+      const double l1 = 0.5 * (a + d) + std::sqrt(0.25 * (a - d) * (a - d) + b * b);
+      if(!(std::sqrt(l1) > 0.2))
+        continue; // a pole
+      // A wall (or a tree): its high points mark the fine cells under them.
+      for(std::uint32_t i : column.find(t.first)->second)
+        if(m_p[i][2] > t.second + high) {
+          auto ins = stacks.emplace(fine_key(m_p[i]), Stack{m_p[i][2], m_p[i][2], 0});
+          Stack& st = ins.first->second;
+          st.lo = (std::min)(st.lo, m_p[i][2]), st.hi = (std::max)(st.hi, m_p[i][2]), ++st.n;
+        }
+    }
+    // A wall's fine cells stack several high points over a metre at least (a crown's do not).
+    for(const auto& st : stacks)
+      if(st.second.n >= 3 && st.second.hi - st.second.lo > 1.0) {
+        const long fi = long(st.first & 0xFFFFFFFFu), fj = long(st.first >> 32);
+        for(long dj = -1; dj <= 1; ++dj) // the cell and its eight neighbours
+          for(long di = -1; di <= 1; ++di)
+            if(fi + di >= 0 && fj + dj >= 0)
+              high_cells.emplace(column_key(fi + di, fj + dj), 1);
+      }
+    // The points under the high points of walls: the walls' lower parts.
+    if(!high_cells.empty())
+      for(std::uint32_t i : active)
+        m_wall[i] = high_cells.count(fine_key(m_p[i])) ? 1 : 0;
+  }
+
   void build_graph()
   {
     // Nodes: the cells of side `cell` (or the points), numbered by their first point.
@@ -177,13 +270,17 @@ private:
     for(const auto& c : m_columns)
       active.insert(active.end(), c.second.begin(), c.second.end());
     std::sort(active.begin(), active.end());
+    find_walls(active);
+    if(!m_o.wall_nodes) // the walls never join an object: no nodes
+      active.erase(std::remove_if(active.begin(), active.end(), [&](std::uint32_t i) { return m_wall[i] != 0; }),
+                   active.end());
     m_node_of_point.assign(m_p.size(), none);
     std::vector<std::uint32_t> first_of_node;
     std::unordered_map<std::uint64_t, std::uint32_t> cell; // with cells: key -> node
     if(m_o.cell > 0) {
       cell.reserve(active.size() / 4 + 16);
       for(std::uint32_t i : active) {
-        const auto ins = cell.emplace(voxel_key(m_p[i][0], m_p[i][1], m_p[i][2], m_o.cell, m_lo),
+        const auto ins = cell.emplace(voxel_key(m_p[i][0], m_p[i][1], m_p[i][2], m_o.cell, m_lo) | wall_bit(i),
                                       std::uint32_t(first_of_node.size()));
         if(ins.second)
           first_of_node.push_back(i);
@@ -217,7 +314,8 @@ private:
       const double k = double(m_member_first[v + 1] - m_member_first[v]);
       m_centroid[v] = {c[0] / k, c[1] / k, c[2] / k};
       m_count[v] = k;
-      m_node_columns[column_of(m_centroid[v][0], m_centroid[v][1])].push_back(std::uint32_t(v));
+      (m_wall[first_of_node[v]] ? m_wall_node_columns : m_node_columns)[column_of(m_centroid[v][0], m_centroid[v][1])]
+        .push_back(std::uint32_t(v));
     }
     // Edges: the k nearest nodes of every node, symmetrized, with weights
     // exp(-(d / sigma)^2) times the smaller point count of their two nodes. With cells, the
@@ -240,9 +338,12 @@ private:
     const std::size_t block = 256;
     parallel.for_each(0, (n + block - 1) / block, [&](std::size_t b, std::vector<std::pair<double, std::uint32_t>>& r) {
       for(std::size_t v = b * block; v < (std::min)(n, (b + 1) * block); ++v) {
+        if(m_wall[first_of_node[v]])
+          continue; // walls have no edges
         if(m_o.cell > 0) {
           r.clear();
           const P3& q = m_p[first_of_node[v]];
+          const std::uint64_t wb = wall_bit(first_of_node[v]);
           const std::uint64_t key = voxel_key(q[0], q[1], q[2], m_o.cell, m_lo);
           for(int reach = 1; reach <= maximum_reach; ++reach) {
             for(int dk = -reach; dk <= reach; ++dk)
@@ -250,7 +351,10 @@ private:
                 for(int di = -reach; di <= reach; ++di) {
                   if((std::max)((std::max)(std::abs(di), std::abs(dj)), std::abs(dk)) < reach)
                     continue; // the inner blocks were done
-                  const auto it = cell.find(voxel_neighbor(key, di, dj, dk));
+                  const std::uint64_t nk = voxel_neighbor(key, di, dj, dk);
+                  if(nk == no_voxel)
+                    continue;
+                  const auto it = cell.find(nk | wb);
                   if(it != cell.end() && it->second != v)
                     r.emplace_back((c[it->second] - c[v]).squared_length(), it->second);
                 }
@@ -265,7 +369,7 @@ private:
           tree.k_nearest(c[v], k + 1, r);
           std::size_t m = 0;
           for(const auto& q : r)
-            if(q.second != v && m < k)
+            if(q.second != v && m < k && m_wall[first_of_node[q.second]] == m_wall[first_of_node[v]])
               knn[v * k + m++] = q.second;
         }
       }
@@ -297,11 +401,15 @@ private:
     }
   }
 
+  // Wall points have their own cells: a high bit of the key that voxel keys never use.
+  std::uint64_t wall_bit(std::uint32_t i) const { return m_wall[i] ? (std::uint64_t(1) << 63) : 0; }
+
   const std::vector<P3>& m_p;
   const Segmentation_options& m_o;
+  std::vector<char> m_wall;
   double m_side = 1.0;
   P3 m_lo{{0, 0, 0}};
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> m_columns, m_node_columns;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> m_columns, m_node_columns, m_wall_node_columns;
   std::vector<std::uint32_t> m_node_of_point, m_members, m_adjacent;
   std::vector<std::size_t> m_member_first, m_adjacent_first;
   std::vector<P3> m_centroid;
@@ -480,9 +588,17 @@ inline std::vector<std::uint32_t> foreground_seeds(const std::vector<P3>& p, con
 inline std::vector<std::uint32_t> object_seeds(const Segmentation_index& index, const P3& location, double R,
                                                const Segmentation_options& o, std::vector<std::uint32_t>& candidates)
 {
+  const auto off_walls = [&]() {
+    candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
+                                    [&](std::uint32_t i) { return index.is_wall(i); }),
+                     candidates.end());
+  };
   index.points_within(location, (std::min)(R + o.ramp_width, 2.0), candidates);
-  if(candidates.empty())
+  off_walls();
+  if(candidates.empty()) {
     index.points_within(location, R + o.ramp_width, candidates);
+    off_walls();
+  }
   return foreground_seeds(index.points(), candidates, location, o.foreground_height);
 }
 
@@ -500,9 +616,9 @@ struct Cut_outcome
 
 inline void build_object_graph(const Segmentation_index& index, const P3& location, double R,
                                const std::vector<std::uint32_t>& seed_points, const Segmentation_options& o,
-                               Segmentation_workspace& w, std::vector<double>& outside)
+                               Segmentation_workspace& w, std::vector<double>& outside, bool with_walls = false)
 {
-  index.nodes_within(location, R + o.ramp_width, w.nodes);
+  index.nodes_within(location, R + o.ramp_width, w.nodes, with_walls);
   if(w.local_of.size() < index.number_of_nodes())
     w.local_of.assign(index.number_of_nodes(), Segmentation_index::none);
   for(std::size_t k = 0; k < w.nodes.size(); ++k)
