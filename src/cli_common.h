@@ -208,6 +208,20 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run); // symmetry
 void add_points_command(CLI::App& app, std::function<int()>& run);   // points scene|background
 void add_points_segment_commands(CLI::App* points, std::function<int()>& run); // points segment|evaluate
 
+// An object of a ground-truth file written by `points generate --truth` (or `points scene
+// --objects`).
+struct Truth_object
+{
+  int id = 0, object_class = 0;
+  std::string name;                           // "class", empty when the file does not say
+  std::array<double, 3> location{{0, 0, 0}};  // z is 0 when the file gives only (x, y)
+  long scanned_points = -1;                   // -1 when the file does not say
+};
+// The objects of such a file (a JSON array of objects with "id", "class", "class_id",
+// "location": [x, y, z] and "scanned_points"; only "location" is required). An empty array gives
+// no object; throws Cli_error on a file that cannot be read or an object without a location.
+std::vector<Truth_object> read_truth_objects(const std::string& path);
+
 } // namespace shape_analysis_cli
 
 #endif // SHAPE_ANALYSIS_CLI_COMMON_H

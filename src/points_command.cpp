@@ -272,51 +272,6 @@ struct Locate_options
   bool quiet = false, verbose = false;
 };
 
-// An object of a truth file: (x, y) and its scanned points (-1 when the file does not say).
-struct Truth_location
-{
-  std::array<double, 2> xy;
-  long scanned_points;
-};
-
-// The objects of a truth file written by `points generate --truth` (or `points scene
-// --objects`): every object {...} with "location": [x, y, ...] and, if there,
-// "scanned_points": n.
-std::vector<Truth_location> read_truth(const std::string& path)
-{
-  std::ifstream in(path);
-  if(!in)
-    throw Cli_error("cannot open " + path);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::vector<Truth_location> truth;
-  const std::string content = text.str();
-  const std::regex location("\"location\"\\s*:\\s*\\[\\s*([-+0-9.eE]+)\\s*,\\s*([-+0-9.eE]+)"),
-    scanned("\"scanned_points\"\\s*:\\s*([0-9]+)");
-  for(std::size_t start = content.find('{'); start != std::string::npos;) {
-    const std::size_t end = content.find('}', start);
-    if(end == std::string::npos)
-      throw Cli_error(path + ": an object is not closed");
-    const std::string object = content.substr(start, end - start);
-    std::smatch m;
-    if(std::regex_search(object, m, location)) {
-      Truth_location t{{0, 0}, -1};
-      try {
-        t.xy = {std::stod(m[1].str()), std::stod(m[2].str())};
-        if(std::regex_search(object, m, scanned))
-          t.scanned_points = std::stol(m[1].str());
-      } catch(const std::exception&) {
-        throw Cli_error(path + ": a location is not a number");
-      }
-      truth.push_back(t);
-    }
-    start = content.find('{', end);
-  }
-  if(truth.empty() && content.find_first_not_of(" \t\r\n[]") != std::string::npos)
-    throw Cli_error(path + ": no \"location\": [x, y, ...] in it (write it with 'points generate --truth')");
-  return truth;
-}
-
 bool has_extension(const std::string& path, const std::string& extension)
 {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -359,7 +314,7 @@ int run_locate(const Locate_options& o)
   // back in the file's coordinates.
   const PSOR::Point_set_read_result read = PSOR::read_point_set(o.input, points);
   const double read_seconds = reading.seconds();
-  const std::vector<Truth_location> truth = o.truth.empty() ? std::vector<Truth_location>() : read_truth(o.truth);
+  const std::vector<Truth_object> truth = o.truth.empty() ? std::vector<Truth_object>() : read_truth_objects(o.truth);
 
   // The input is a scan unless it holds the 'kind' property of 'points background' (then only
   // the points of kind 0, the foreground, are used).
@@ -418,10 +373,10 @@ int run_locate(const Locate_options& o)
   // Precision against every true object; recall against the objects that received at least
   // --truth-points points from the scanner (all of them when the truth does not say).
   std::vector<std::array<double, 2>> all, visible;
-  for(const Truth_location& t : truth) {
-    all.push_back(t.xy);
+  for(const Truth_object& t : truth) {
+    all.push_back({t.location[0], t.location[1]});
     if(t.scanned_points < 0 || std::size_t(t.scanned_points) >= o.truth_points)
-      visible.push_back(t.xy);
+      visible.push_back({t.location[0], t.location[1]});
   }
   PSOR::Localization_evaluation e, e_all;
   if(!truth.empty()) {
@@ -479,6 +434,51 @@ int run_locate(const Locate_options& o)
 }
 
 } // namespace
+
+std::vector<Truth_object> read_truth_objects(const std::string& path)
+{
+  std::ifstream in(path);
+  if(!in)
+    throw Cli_error("cannot open " + path);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string content = text.str();
+  const std::regex id("\"id\"\\s*:\\s*(-?[0-9]+)"), class_id("\"class_id\"\\s*:\\s*(-?[0-9]+)"),
+    name("\"class\"\\s*:\\s*\"([^\"]*)\""), scanned("\"scanned_points\"\\s*:\\s*([0-9]+)"),
+    location("\"location\"\\s*:\\s*\\[\\s*([-+0-9.eE]+)\\s*,\\s*([-+0-9.eE]+)(\\s*,\\s*([-+0-9.eE]+))?");
+  std::vector<Truth_object> r;
+  for(std::size_t start = content.find('{'); start != std::string::npos;) {
+    const std::size_t end = content.find('}', start);
+    if(end == std::string::npos)
+      throw Cli_error(path + ": an object is not closed");
+    const std::string object = content.substr(start, end - start);
+    std::smatch m;
+    Truth_object t;
+    t.id = int(r.size());
+    try {
+      if(std::regex_search(object, m, id))
+        t.id = std::stoi(m[1].str());
+      if(!std::regex_search(object, m, location))
+        throw Cli_error(path + ": object " + std::to_string(t.id) + " has no \"location\": [x, y, z]");
+      t.location = {std::stod(m[1].str()), std::stod(m[2].str()), m[4].matched ? std::stod(m[4].str()) : 0.0};
+      if(std::regex_search(object, m, class_id))
+        t.object_class = std::stoi(m[1].str());
+      if(std::regex_search(object, m, name))
+        t.name = m[1].str();
+      if(std::regex_search(object, m, scanned))
+        t.scanned_points = std::stol(m[1].str());
+    } catch(const std::invalid_argument&) {
+      throw Cli_error(path + ": a number of object " + std::to_string(t.id) + " cannot be read");
+    } catch(const std::out_of_range&) {
+      throw Cli_error(path + ": a number of object " + std::to_string(t.id) + " is out of range");
+    }
+    r.push_back(t);
+    start = content.find('{', end);
+  }
+  if(r.empty() && content.find_first_not_of(" \t\r\n[]") != std::string::npos)
+    throw Cli_error(path + ": no \"location\": [x, y, ...] in it (write it with 'points generate --truth')");
+  return r;
+}
 
 void add_points_command(CLI::App& app, std::function<int()>& run)
 {

@@ -236,59 +236,6 @@ int run_segment(const Segment_options& o)
   return 0;
 }
 
-struct Truth_object
-{
-  int id = 0, object_class = 0;
-  std::string name;
-  std::array<double, 3> location{{0, 0, 0}};
-};
-
-// The objects of a truth file written by `points scene --objects` (or `points generate --truth`):
-// a JSON array of objects with "id", "class", "class_id" and "location": [x, y, z].
-std::vector<Truth_object> read_truth_objects(const std::string& path)
-{
-  std::ifstream in(path);
-  if(!in)
-    throw Cli_error("cannot open " + path);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string content = text.str();
-  const std::regex id("\"id\"\\s*:\\s*(-?[0-9]+)"), class_id("\"class_id\"\\s*:\\s*(-?[0-9]+)"),
-    name("\"class\"\\s*:\\s*\"([^\"]*)\""),
-    location("\"location\"\\s*:\\s*\\[\\s*([-+0-9.eE]+)\\s*,\\s*([-+0-9.eE]+)\\s*,\\s*([-+0-9.eE]+)");
-  std::vector<Truth_object> r;
-  std::size_t start = content.find('{');
-  while(start != std::string::npos) {
-    const std::size_t end = content.find('}', start);
-    if(end == std::string::npos)
-      throw Cli_error(path + ": an object is not closed");
-    const std::string object = content.substr(start, end - start);
-    std::smatch m;
-    Truth_object t;
-    try {
-      if(!std::regex_search(object, m, id))
-        throw Cli_error(path + ": an object has no \"id\"");
-      t.id = std::stoi(m[1].str());
-      if(!std::regex_search(object, m, location))
-        throw Cli_error(path + ": object " + std::to_string(t.id) + " has no \"location\": [x, y, z]");
-      t.location = {std::stod(m[1].str()), std::stod(m[2].str()), std::stod(m[3].str())};
-      if(std::regex_search(object, m, class_id))
-        t.object_class = std::stoi(m[1].str());
-      if(std::regex_search(object, m, name))
-        t.name = m[1].str();
-    } catch(const std::invalid_argument&) {
-      throw Cli_error(path + ": a number of object " + std::to_string(t.id) + " cannot be read");
-    } catch(const std::out_of_range&) {
-      throw Cli_error(path + ": a number of object " + std::to_string(t.id) + " is out of range");
-    }
-    r.push_back(t);
-    start = content.find('{', end);
-  }
-  if(r.empty())
-    throw Cli_error(path + ": no objects in it (write it with 'points generate --truth')");
-  return r;
-}
-
 struct Evaluate_options
 {
   std::string truth, locations, objects, report;
@@ -335,6 +282,8 @@ int run_evaluate(const Evaluate_options& o)
   if(!(o.radius > 0) || !std::isfinite(o.radius))
     throw Usage_error("--radius must be a positive number");
   const std::vector<Truth_object> truth = read_truth_objects(o.truth);
+  if(truth.empty())
+    throw Cli_error(o.truth + ": no objects in it (write it with 'points generate --truth')");
   std::map<int, int> class_of_instance;
   std::map<int, std::string> class_names;
   for(const Truth_object& t : truth) {

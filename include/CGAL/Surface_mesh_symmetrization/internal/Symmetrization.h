@@ -478,9 +478,11 @@ public:
     }
     out.points = x;
     {
-      const Surface result{x, m_input.triangles};
-      const Surface_index index(result);
-      out.mirrors = mirror_points(result, index, m_inverses, true, m_o.number_of_threads);
+      if(out.mirrors.empty()) { // refine() leaves those of the positions it kept
+        const Surface result{x, m_input.triangles};
+        const Surface_index index(result);
+        out.mirrors = mirror_points(result, index, m_inverses, true, m_o.number_of_threads);
+      }
       out.error_after = rms_mirror_distance(out.mirrors, m_levels.front().weights) / m_diagonal;
       if(!out.iterations.empty())
         out.iterations.back().symmetry_error = out.error_after;
@@ -628,7 +630,7 @@ private:
   // The isometric refinement of the finest level, after the constrained steps: while the error
   // is above the target, a step of refine_step() with a weight of the symmetry error that grows
   // by sqrt(10) per step (from refinement_ratio to 1000 times it); the positions of the smallest
-  // error are kept.
+  // error are kept, and their mirror points are left in `out.mirrors`.
   void refine(const Level& level, std::vector<Vector_3d>& x, Symmetrization_output& out) const
   {
     double rho = m_o.refinement_ratio;
@@ -637,13 +639,14 @@ private:
     for(std::size_t step = 0;; ++step) {
       const Surface current{x, level.original.triangles};
       const Surface_index index(current);
-      const auto mirrors = mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
+      std::vector<std::vector<Mirror>> mirrors = mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
       const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
       if(step > 0)
         out.iterations.back().symmetry_error = e;
       if(e < best_error) {
         best_error = e;
         best_x = x;
+        out.mirrors = mirrors;
       }
       if(e <= m_o.target_error || step >= m_o.refinement_steps)
         break;
