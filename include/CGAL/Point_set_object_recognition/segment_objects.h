@@ -192,8 +192,10 @@ inline Segmentation_result segment_objects(const std::vector<P3>& p, const std::
   const auto start = std::chrono::steady_clock::now();
   if(p.empty())
     throw Bad_input("segment_objects: the point cloud is empty");
+  const Point_columns columns(p);
+  columns.check(locations);
   const bool graph = o.kind == Segmentation_kind::MIN_CUT || o.kind == Segmentation_kind::MIN_CUT_AUTO;
-  const Segmentation_index index(p, locations, segmentation_reach(o), o, graph);
+  const Segmentation_index index(columns, locations, segmentation_reach(o), o, graph);
   Segmentation_result r;
   r.preparation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<Segmentation_output> out(locations.size());
@@ -494,7 +496,9 @@ private:
   void initialize()
   {
     const std::vector<internal::P3> at{m_location};
-    m_index.reset(new internal::Segmentation_index(m_points, at, internal::segmentation_reach(m_options), m_options, true));
+    m_columns.reset(new internal::Point_columns(m_points));
+    m_columns->check(at);
+    m_index.reset(new internal::Segmentation_index(*m_columns, at, internal::segmentation_reach(m_options), m_options, true));
     internal::Segmentation_workspace w;
     internal::Segmentation_output first = internal::segment_one(*m_index, m_location, m_options, w);
     m_result.radius = first.radius;
@@ -602,6 +606,7 @@ private:
   std::vector<internal::P3> m_points;
   internal::Segmentation_options m_options;
   internal::P3 m_location;
+  std::unique_ptr<internal::Point_columns> m_columns; // before m_index, which refers to it
   std::unique_ptr<internal::Segmentation_index> m_index;
   std::vector<std::uint32_t> m_nodes;
   std::unordered_map<std::uint32_t, std::uint32_t> m_local;

@@ -72,46 +72,344 @@ struct Segmentation_output
 
 inline double horizontal_distance(const P3& a, const P3& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); }
 
-// The points of a cloud by columns (squares of side `side` in (x, y)), and the graph nodes of
-// the points that lie in the columns near the locations.
+// A hash map from 64-bit keys (never all ones) to 32-bit values, by open addressing with linear
+// probing: the grids of the segmentation look up millions of keys, most of them absent.
+class Key_map
+{
+public:
+  static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+
+  explicit Key_map(std::size_t expected = 0) { reserve(expected); }
+
+  std::size_t size() const { return m_size; }
+  bool empty() const { return m_size == 0; }
+
+  void reserve(std::size_t n)
+  {
+    std::size_t capacity = 16;
+    while(capacity < 2 * n + 2)
+      capacity *= 2;
+    if(capacity > m_slots.size())
+      rehash(capacity);
+  }
+
+  // The value of `key`, inserting `value` when absent; and whether it was inserted.
+  std::pair<std::uint32_t, bool> emplace(std::uint64_t key, std::uint32_t value)
+  {
+    if(2 * (m_size + 1) > m_slots.size())
+      rehash((std::max)(std::size_t(16), 2 * m_slots.size()));
+    std::size_t h = slot(key);
+    while(m_slots[h].key != empty_key) {
+      if(m_slots[h].key == key)
+        return {m_slots[h].value, false};
+      h = (h + 1) & m_mask;
+    }
+    m_slots[h].key = key, m_slots[h].value = value;
+    ++m_size;
+    return {value, true};
+  }
+
+  // The value of `key`, `none` when absent.
+  std::uint32_t find(std::uint64_t key) const
+  {
+    if(m_size == 0)
+      return none;
+    std::size_t h = slot(key);
+    while(m_slots[h].key != empty_key) {
+      if(m_slots[h].key == key)
+        return m_slots[h].value;
+      h = (h + 1) & m_mask;
+    }
+    return none;
+  }
+
+private:
+  static constexpr std::uint64_t empty_key = ~std::uint64_t(0);
+  struct Slot
+  {
+    std::uint64_t key;
+    std::uint32_t value;
+  };
+
+  std::size_t slot(std::uint64_t key) const
+  {
+    return std::size_t((key * 0x9E3779B97F4A7C15ull) >> m_shift) & m_mask;
+  }
+
+  void rehash(std::size_t capacity)
+  {
+    std::vector<Slot> slots(capacity, Slot{empty_key, 0});
+    slots.swap(m_slots);
+    m_mask = capacity - 1;
+    m_shift = 64;
+    for(std::size_t c = capacity; c > 1; c /= 2)
+      --m_shift;
+    m_size = 0;
+    for(const Slot& s : slots)
+      if(s.key != empty_key)
+        emplace(s.key, s.value);
+  }
+
+  std::vector<Slot> m_slots;
+  std::size_t m_mask = 0, m_size = 0;
+  int m_shift = 64;
+};
+
+// Columns (i, j) of a grid, keyed i | j << 32, to 32-bit values: a dense array over their
+// bounding box when it is not much larger than the columns expected, a Key_map otherwise.
+class Column_index
+{
+public:
+  static constexpr std::uint32_t none = Key_map::none;
+
+  static std::uint64_t key(long i, long j) { return std::uint64_t(i) | (std::uint64_t(j) << 32); }
+
+  // For the columns of [i0, i1] x [j0, j1], about `expected` of them.
+  void reset(long i0, long j0, long i1, long j1, std::size_t expected)
+  {
+    m_i0 = i0, m_j0 = j0, m_ni = i1 - i0 + 1, m_nj = j1 - j0 + 1;
+    m_dense = m_ni > 0 && m_nj > 0 && double(m_ni) * double(m_nj) <= 16.0 * double(expected) + double(1 << 20);
+    m_cells.assign(m_dense ? std::size_t(m_ni * m_nj) : 0, none);
+    m_map = Key_map(m_dense ? 0 : expected);
+  }
+
+  std::pair<std::uint32_t, bool> emplace(std::uint64_t k, std::uint32_t value)
+  {
+    if(!m_dense)
+      return m_map.emplace(k, value);
+    std::uint32_t& c = m_cells[cell(k)];
+    if(c != none)
+      return {c, false};
+    c = value;
+    return {value, true};
+  }
+
+  std::uint32_t find(std::uint64_t k) const
+  {
+    if(!m_dense)
+      return m_map.find(k);
+    const long i = long(k & 0xFFFFFFFFu) - m_i0, j = long(k >> 32) - m_j0;
+    if(i < 0 || j < 0 || i >= m_ni || j >= m_nj)
+      return none;
+    return m_cells[std::size_t(j * m_ni + i)];
+  }
+
+private:
+  std::size_t cell(std::uint64_t k) const
+  {
+    return std::size_t((long(k >> 32) - m_j0) * m_ni + (long(k & 0xFFFFFFFFu) - m_i0));
+  }
+
+  bool m_dense = false;
+  long m_i0 = 0, m_j0 = 0, m_ni = 0, m_nj = 0;
+  std::vector<std::uint32_t> m_cells;
+  Key_map m_map;
+};
+
+// Items grouped by the columns (i, j) of a grid (keys i | j << 32): per column its items, in the
+// order given.
+struct Key_lists
+{
+  Column_index index;               // key -> list
+  std::vector<std::uint64_t> keys;  // per list, its key
+  std::vector<std::size_t> first;   // per list, its first item (one more at the end)
+  std::vector<std::uint32_t> items;
+
+  std::size_t size() const { return keys.size(); }
+
+  template <typename KeyOf> void assign(const std::vector<std::uint32_t>& all, const KeyOf& key_of)
+  {
+    std::vector<std::uint64_t> key_of_item(all.size());
+    long i0 = 0, j0 = 0, i1 = -1, j1 = -1;
+    for(std::size_t k = 0; k < all.size(); ++k) {
+      const std::uint64_t key = key_of(all[k]);
+      key_of_item[k] = key;
+      const long i = long(key & 0xFFFFFFFFu), j = long(key >> 32);
+      if(k == 0)
+        i0 = i1 = i, j0 = j1 = j;
+      i0 = (std::min)(i0, i), i1 = (std::max)(i1, i), j0 = (std::min)(j0, j), j1 = (std::max)(j1, j);
+    }
+    index.reset(i0, j0, i1, j1, all.size() / 4 + 16);
+    keys.clear();
+    std::vector<std::uint32_t> list_of(all.size());
+    std::vector<std::size_t> count;
+    for(std::size_t k = 0; k < all.size(); ++k) {
+      const std::uint64_t key = key_of_item[k];
+      const auto ins = index.emplace(key, std::uint32_t(keys.size()));
+      if(ins.second)
+        keys.push_back(key), count.push_back(0);
+      ++count[ins.first];
+      list_of[k] = ins.first;
+    }
+    first.assign(keys.size() + 1, 0);
+    for(std::size_t c = 0; c < keys.size(); ++c)
+      first[c + 1] = first[c] + count[c];
+    items.assign(all.size(), 0);
+    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    for(std::size_t k = 0; k < all.size(); ++k)
+      items[fill[list_of[k]]++] = all[k];
+  }
+
+  // The list of `key`, `Key_map::none` when there is none.
+  std::uint32_t find(std::uint64_t key) const { return index.find(key); }
+  const std::uint32_t* begin(std::uint32_t list) const { return items.data() + first[list]; }
+  const std::uint32_t* end(std::uint32_t list) const { return items.data() + first[list + 1]; }
+
+  // Calls f on the items of the lists of the squares (keyed by their column and row of side
+  // `side` from `lo`) that meet the square of half side `radius` around `at`.
+  template <typename F>
+  void for_square(const P3& lo, double side, const P3& at, double radius, const F& f) const
+  {
+    const long i0 = (std::max)(0L, long(std::floor((at[0] - radius - lo[0]) / side)));
+    const long i1 = long(std::floor((at[0] + radius - lo[0]) / side));
+    const long j0 = (std::max)(0L, long(std::floor((at[1] - radius - lo[1]) / side)));
+    const long j1 = long(std::floor((at[1] + radius - lo[1]) / side));
+    for(long j = j0; j <= j1; ++j)
+      for(long i = i0; i <= i1; ++i) {
+        const std::uint32_t c = find(Column_index::key(i, j));
+        if(c != Key_map::none)
+          for(const std::uint32_t* q = begin(c); q != end(c); ++q)
+            f(*q);
+      }
+  }
+};
+
+// The points of a cloud by columns (squares of side 1 m in (x, y)), built once per call and
+// shared by the graphs of its rounds.
+class Point_columns
+{
+public:
+  static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+
+  // Bad_input for too many points, a coordinate that is not finite or too large a scene.
+  explicit Point_columns(const std::vector<P3>& points) : m_p(points)
+  {
+    if(points.size() >= std::size_t(none))
+      throw CGAL::Shape_analysis::Bad_input("segment_objects: too many points (at most 2^32 - 2)");
+    checked_bounds(points, m_side, "segment_objects", m_lo, m_hi);
+    const std::size_t n = points.size();
+    const long ni = long((m_hi[0] - m_lo[0]) / m_side) + 1, nj = long((m_hi[1] - m_lo[1]) / m_side) + 1;
+    m_column_of_point.assign(n, none);
+    if(double(ni) * double(nj) <= 4.0 * double(n) + double(1 << 20)) {
+      // A dense grid: column (i, j) is list j ni + i (empty lists included), by a counting sort.
+      m_lists.index.reset(0, 0, ni - 1, nj - 1, n);
+      m_lists.keys.resize(std::size_t(ni * nj));
+      for(long j = 0; j < nj; ++j)
+        for(long i = 0; i < ni; ++i) {
+          const std::uint64_t k = Column_index::key(i, j);
+          m_lists.index.emplace(k, std::uint32_t(j * ni + i));
+          m_lists.keys[std::size_t(j * ni + i)] = k;
+        }
+      m_lists.first.assign(m_lists.keys.size() + 1, 0);
+      for(std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t c = std::uint32_t(long((m_p[i][1] - m_lo[1]) / m_side) * ni + long((m_p[i][0] - m_lo[0]) / m_side));
+        m_column_of_point[i] = c;
+        ++m_lists.first[c + 1];
+      }
+      for(std::size_t c = 0; c < m_lists.keys.size(); ++c)
+        m_lists.first[c + 1] += m_lists.first[c];
+      m_lists.items.resize(n);
+      std::vector<std::size_t> fill(m_lists.first.begin(), m_lists.first.end() - 1);
+      for(std::size_t i = 0; i < n; ++i)
+        m_lists.items[fill[m_column_of_point[i]]++] = std::uint32_t(i);
+    } else {
+      std::vector<std::uint32_t> all(n);
+      std::iota(all.begin(), all.end(), 0u);
+      m_lists.assign(all, [&](std::uint32_t i) { return key(m_p[i][0], m_p[i][1]); });
+      for(std::uint32_t c = 0; c < m_lists.size(); ++c)
+        for(const std::uint32_t* q = m_lists.begin(c); q != m_lists.end(c); ++q)
+          m_column_of_point[*q] = c;
+    }
+  }
+
+  // Bad_input for a location that is not finite or lies outside the cloud's horizontal box.
+  void check(const std::vector<P3>& locations) const
+  {
+    for(const P3& l : locations) {
+      for(double c : l)
+        if(!std::isfinite(c))
+          throw CGAL::Shape_analysis::Bad_input("segment_objects: a location is not finite");
+      if(l[0] < m_lo[0] - 1e-9 || l[0] > m_hi[0] + 1e-9 || l[1] < m_lo[1] - 1e-9 || l[1] > m_hi[1] + 1e-9)
+        throw CGAL::Shape_analysis::Bad_input("segment_objects: a location lies outside the point cloud (its "
+                                              "horizontal bounding box)");
+    }
+  }
+
+  const std::vector<P3>& points() const { return m_p; }
+  const P3& lo() const { return m_lo; }
+  double side() const { return m_side; }
+  const Key_lists& lists() const { return m_lists; }
+  std::uint32_t column_of_point(std::size_t i) const { return m_column_of_point[i]; }
+  std::uint64_t key(double x, double y) const
+  {
+    return Column_index::key(long((x - m_lo[0]) / m_side), long((y - m_lo[1]) / m_side));
+  }
+
+  // Calls f on the items of the columns of `lists` (keyed as these columns) that meet the square
+  // of half side `radius` around `at`.
+  template <typename F>
+  void for_columns(const P3& at, double radius, const F& f, const Key_lists& lists) const
+  {
+    lists.for_square(m_lo, m_side, at, radius, f);
+  }
+
+  // The points within `radius` of (x, y) horizontally, increasing.
+  void points_within(const P3& at, double radius, std::vector<std::uint32_t>& out) const
+  {
+    out.clear();
+    for_columns(at, radius, [&](std::uint32_t i) {
+      if(horizontal_distance(m_p[i], at) <= radius)
+        out.push_back(i);
+    }, m_lists);
+    std::sort(out.begin(), out.end());
+  }
+
+private:
+  const std::vector<P3>& m_p;
+  static constexpr double m_side = 1.0;
+  P3 m_lo{{0, 0, 0}}, m_hi{{0, 0, 0}};
+  Key_lists m_lists;
+  std::vector<std::uint32_t> m_column_of_point;
+};
+
+// The graph nodes of the points near a set of locations: those of the columns of `columns` that
+// come within `reach` of a location (horizontally).
 class Segmentation_index
 {
 public:
   static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
 
-  Segmentation_index(const std::vector<P3>& points, const std::vector<P3>& locations, double reach,
+  Segmentation_index(const Point_columns& columns, const std::vector<P3>& locations, double reach,
                      const Segmentation_options& o, bool with_graph)
-    : m_p(points), m_o(o)
+    : m_p(columns.points()), m_o(o), m_pc(columns)
   {
-    if(points.size() >= std::size_t(none))
-      throw CGAL::Shape_analysis::Bad_input("segment_objects: too many points (at most 2^32 - 2)");
-    P3 hi;
-    checked_bounds(points, m_side, "segment_objects", m_lo, hi);
+    m_lo = columns.lo(), m_side = columns.side();
+    if(!with_graph)
+      return;
+    // The columns within `reach` of a location, and their points.
+    std::vector<char> near_column(columns.lists().size(), 0);
     for(const P3& l : locations) {
-      for(double c : l)
-        if(!std::isfinite(c))
-          throw CGAL::Shape_analysis::Bad_input("segment_objects: a location is not finite");
-      if(l[0] < m_lo[0] - 1e-9 || l[0] > hi[0] + 1e-9 || l[1] < m_lo[1] - 1e-9 || l[1] > hi[1] + 1e-9)
-        throw CGAL::Shape_analysis::Bad_input("segment_objects: a location lies outside the point cloud (its "
-                                              "horizontal bounding box)");
+      const long i0 = (std::max)(0L, long(std::floor((l[0] - reach - m_lo[0]) / m_side)));
+      const long i1 = long(std::floor((l[0] + reach - m_lo[0]) / m_side));
+      const long j0 = (std::max)(0L, long(std::floor((l[1] - reach - m_lo[1]) / m_side)));
+      const long j1 = long(std::floor((l[1] + reach - m_lo[1]) / m_side));
+      for(long j = j0; j <= j1; ++j)
+        for(long i = i0; i <= i1; ++i) {
+          const double x0 = m_lo[0] + double(i) * m_side, y0 = m_lo[1] + double(j) * m_side;
+          const double dx = (std::max)(0.0, (std::max)(x0 - l[0], l[0] - x0 - m_side));
+          const double dy = (std::max)(0.0, (std::max)(y0 - l[1], l[1] - y0 - m_side));
+          if(dx * dx + dy * dy > reach * reach)
+            continue;
+          const std::uint32_t c = columns.lists().find(Column_index::key(i, j));
+          if(c != Key_map::none)
+            near_column[c] = 1;
+        }
     }
-    // Columns near the locations.
-    std::unordered_map<std::uint64_t, char> active;
-    const long r = long(std::ceil(reach / m_side)) + 1;
-    for(const P3& l : locations) {
-      const long ci = long((l[0] - m_lo[0]) / m_side), cj = long((l[1] - m_lo[1]) / m_side);
-      for(long dj = -r; dj <= r; ++dj)
-        for(long di = -r; di <= r; ++di)
-          if(ci + di >= 0 && cj + dj >= 0)
-            active.emplace(column_key(ci + di, cj + dj), 1);
-    }
-    for(std::size_t i = 0; i < points.size(); ++i) {
-      const std::uint64_t k = column_of(points[i][0], points[i][1]);
-      if(active.count(k))
-        m_columns[k].push_back(std::uint32_t(i));
-    }
-    if(with_graph)
-      build_graph();
+    std::vector<std::uint32_t> near;
+    for(std::size_t i = 0; i < m_p.size(); ++i)
+      if(near_column[columns.column_of_point(i)])
+        near.push_back(std::uint32_t(i));
+    build_graph(near);
   }
 
   const std::vector<P3>& points() const { return m_p; }
@@ -119,13 +417,7 @@ public:
   // The points within `radius` of (x, y) horizontally, increasing.
   void points_within(const P3& at, double radius, std::vector<std::uint32_t>& out) const
   {
-    out.clear();
-    for_columns(at, radius, [&](const std::vector<std::uint32_t>& column) {
-      for(std::uint32_t i : column)
-        if(horizontal_distance(m_p[i], at) <= radius)
-          out.push_back(i);
-    }, m_columns);
-    std::sort(out.begin(), out.end());
+    m_pc.points_within(at, radius, out);
   }
 
   // The graph nodes whose centroids lie within `radius` of (x, y) horizontally, increasing; the
@@ -133,10 +425,9 @@ public:
   void nodes_within(const P3& at, double radius, std::vector<std::uint32_t>& out, bool with_walls = false) const
   {
     out.clear();
-    const auto add = [&](const std::vector<std::uint32_t>& column) {
-      for(std::uint32_t v : column)
-        if(horizontal_distance(m_centroid[v], at) <= radius)
-          out.push_back(v);
+    const auto add = [&](std::uint32_t v) {
+      if(horizontal_distance(m_centroid[v], at) <= radius)
+        out.push_back(v);
     };
     for_columns(at, radius, add, m_node_columns);
     if(with_walls)
@@ -162,24 +453,16 @@ public:
   }
 
 private:
-  static std::uint64_t column_key(long i, long j) { return std::uint64_t(i) | (std::uint64_t(j) << 32); }
   std::uint64_t column_of(double x, double y) const
   {
-    return column_key(long((x - m_lo[0]) / m_side), long((y - m_lo[1]) / m_side));
+    return Column_index::key(long((x - m_lo[0]) / m_side), long((y - m_lo[1]) / m_side));
   }
-  template <typename F, typename Map>
-  void for_columns(const P3& at, double radius, const F& f, const Map& map) const
+  // Calls f on the items of the columns of `lists` that meet the square of half side `radius`
+  // around `at`.
+  template <typename F>
+  void for_columns(const P3& at, double radius, const F& f, const Key_lists& lists) const
   {
-    const long i0 = (std::max)(0L, long(std::floor((at[0] - radius - m_lo[0]) / m_side)));
-    const long i1 = long(std::floor((at[0] + radius - m_lo[0]) / m_side));
-    const long j0 = (std::max)(0L, long(std::floor((at[1] - radius - m_lo[1]) / m_side)));
-    const long j1 = long(std::floor((at[1] + radius - m_lo[1]) / m_side));
-    for(long j = j0; j <= j1; ++j)
-      for(long i = i0; i <= i1; ++i) {
-        const auto it = map.find(column_key(i, j));
-        if(it != map.end())
-          f(it->second);
-      }
+    lists.for_square(m_lo, m_side, at, radius, f);
   }
 
   // Flags the points of `active` (increasing) that lie on a wall (see Segmentation_options).
@@ -189,48 +472,58 @@ private:
     const double s = m_o.wall_column;
     if(!(m_o.wall_height > 0) || !(s > 0))
       return;
-    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> column;
-    for(std::uint32_t i : active)
-      column[column_key(long((m_p[i][0] - m_lo[0]) / s), long((m_p[i][1] - m_lo[1]) / s))].push_back(i);
-    std::unordered_map<std::uint64_t, double> tall; // column -> its lowest height
-    for(const auto& c : column) {
+    Key_lists column;
+    column.assign(active, [&](std::uint32_t i) {
+      return Column_index::key(long((m_p[i][0] - m_lo[0]) / s), long((m_p[i][1] - m_lo[1]) / s));
+    });
+    const std::size_t nc = column.size();
+    // Per column, its lowest height when it is tall, NaN otherwise.
+    const double not_tall = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> tall(nc, not_tall);
+    std::vector<std::uint32_t> tall_columns;
+    for(std::uint32_t c = 0; c < nc; ++c) {
       double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-      for(std::uint32_t i : c.second)
-        lo = (std::min)(lo, m_p[i][2]), hi = (std::max)(hi, m_p[i][2]);
+      for(const std::uint32_t* q = column.begin(c); q != column.end(c); ++q)
+        lo = (std::min)(lo, m_p[*q][2]), hi = (std::max)(hi, m_p[*q][2]);
       if(hi - lo > m_o.wall_height)
-        tall.emplace(c.first, lo);
+        tall[c] = lo, tall_columns.push_back(c);
     }
     const double high = 2.0; // above the lowest point of its column: above the small objects
     const double fine = 0.5 * m_o.wall_tolerance;
     const auto fine_key = [&](const P3& q) {
-      return column_key(long((q[0] - m_lo[0]) / fine), long((q[1] - m_lo[1]) / fine));
+      return Column_index::key(long((q[0] - m_lo[0]) / fine), long((q[1] - m_lo[1]) / fine));
     };
-    struct Stack { double lo, hi; int n; };
-    std::unordered_map<std::uint64_t, Stack> stacks; // fine cell -> its high points of walls
-    std::unordered_map<std::uint64_t, char> high_cells;
+    struct Stack { double lo, hi; int n; std::uint64_t key; };
+    Key_map stack_of; // fine cell -> its stack of high points of walls
+    std::vector<Stack> stacks;
+    Key_map high_cells;
     const int reach = int(std::ceil(0.5 / s));
+    const long per = long(std::lround(s / fine));
+    const bool nested = per >= 1 && per <= 16 && (per & (per - 1)) == 0 && double(per) * fine == s;
+    std::vector<Stack> local(nested ? std::size_t(per * per) : 0);
     // Per tall column, the moments of its high points (relative to the grid's corner).
-    std::unordered_map<std::uint64_t, std::array<double, 6>> moments;
-    for(const auto& t : tall) {
+    std::vector<std::array<double, 6>> moments(nc);
+    for(std::uint32_t c : tall_columns) {
       std::array<double, 6> m{{0, 0, 0, 0, 0, 0}};
-      for(std::uint32_t i : column.find(t.first)->second)
-        if(m_p[i][2] > t.second + high) {
-          const double x = m_p[i][0] - m_lo[0], y = m_p[i][1] - m_lo[1];
+      for(const std::uint32_t* q = column.begin(c); q != column.end(c); ++q)
+        if(m_p[*q][2] > tall[c] + high) {
+          const double x = m_p[*q][0] - m_lo[0], y = m_p[*q][1] - m_lo[1];
           m[0] += 1, m[1] += x, m[2] += y, m[3] += x * x, m[4] += x * y, m[5] += y * y;
         }
-      moments.emplace(t.first, m);
+      moments[c] = m;
     }
-    for(const auto& t : tall) {
-      const long ci = long(t.first & 0xFFFFFFFFu), cj = long(t.first >> 32);
+    for(std::uint32_t c : tall_columns) {
+      const std::uint64_t key = column.keys[c];
+      const long ci = long(key & 0xFFFFFFFFu), cj = long(key >> 32);
       double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
       for(long dj = -reach; dj <= reach; ++dj)
         for(long di = -reach; di <= reach; ++di) {
           if(ci + di < 0 || cj + dj < 0)
             continue;
-          const auto it = moments.find(column_key(ci + di, cj + dj));
-          if(it == moments.end())
+          const std::uint32_t a = column.find(Column_index::key(ci + di, cj + dj));
+          if(a == Key_map::none || std::isnan(tall[a]))
             continue;
-          const std::array<double, 6>& m = it->second;
+          const std::array<double, 6>& m = moments[a];
           n += m[0], sx += m[1], sy += m[2], sxx += m[3], sxy += m[4], syy += m[5];
         }
       if(n < 10)
@@ -240,51 +533,95 @@ private:
       const double l1 = 0.5 * (a + d) + std::sqrt(0.25 * (a - d) * (a - d) + b * b);
       if(!(std::sqrt(l1) > 0.2))
         continue; // a pole
-      // A wall (or a tree): its high points mark the fine cells under them.
-      for(std::uint32_t i : column.find(t.first)->second)
-        if(m_p[i][2] > t.second + high) {
-          auto ins = stacks.emplace(fine_key(m_p[i]), Stack{m_p[i][2], m_p[i][2], 0});
-          Stack& st = ins.first->second;
-          st.lo = (std::min)(st.lo, m_p[i][2]), st.hi = (std::max)(st.hi, m_p[i][2]), ++st.n;
+      // A wall (or a tree): its high points mark the fine cells under them. When the fine cells
+      // divide the columns exactly (a power of two of them along each axis, as by default: then
+      // a fine cell lies in a single column), the stacks of the column are gathered in a small
+      // array of its fine cells.
+      if(nested)
+        std::fill(local.begin(), local.end(), Stack{0, 0, 0, 0});
+      for(const std::uint32_t* q = column.begin(c); q != column.end(c); ++q) {
+        const P3& p = m_p[*q];
+        if(p[2] > tall[c] + high) {
+          const std::uint64_t key = fine_key(p);
+          if(nested) {
+            const long li = long(key & 0xFFFFFFFFu) - per * ci, lj = long(key >> 32) - per * cj;
+            if(li >= 0 && lj >= 0 && li < per && lj < per) {
+              Stack& st = local[std::size_t(lj * per + li)];
+              if(st.n == 0)
+                st = Stack{p[2], p[2], 0, key};
+              st.lo = (std::min)(st.lo, p[2]), st.hi = (std::max)(st.hi, p[2]), ++st.n;
+              continue;
+            }
+          }
+          const auto ins = stack_of.emplace(key, std::uint32_t(stacks.size()));
+          if(ins.second)
+            stacks.push_back(Stack{p[2], p[2], 0, key});
+          Stack& st = stacks[ins.first];
+          st.lo = (std::min)(st.lo, p[2]), st.hi = (std::max)(st.hi, p[2]), ++st.n;
         }
+      }
+      if(nested)
+        for(const Stack& st : local)
+          if(st.n > 0)
+            stacks.push_back(st);
     }
     // A wall's fine cells stack several high points over a metre at least (a crown's do not).
-    for(const auto& st : stacks)
-      if(st.second.n >= 3 && st.second.hi - st.second.lo > 1.0) {
-        const long fi = long(st.first & 0xFFFFFFFFu), fj = long(st.first >> 32);
+    // The cells of walls and their eight neighbours: with nested fine cells (at most 8 x 8 per
+    // column), bits of a mask per column; else in a map.
+    const bool masks = nested && per * per <= 64;
+    std::vector<std::uint64_t> mask(masks ? nc : 0, 0);
+    for(const Stack& st : stacks)
+      if(st.n >= 3 && st.hi - st.lo > 1.0) {
+        const long fi = long(st.key & 0xFFFFFFFFu), fj = long(st.key >> 32);
         for(long dj = -1; dj <= 1; ++dj) // the cell and its eight neighbours
-          for(long di = -1; di <= 1; ++di)
-            if(fi + di >= 0 && fj + dj >= 0)
-              high_cells.emplace(column_key(fi + di, fj + dj), 1);
+          for(long di = -1; di <= 1; ++di) {
+            const long gi = fi + di, gj = fj + dj;
+            if(gi < 0 || gj < 0)
+              continue;
+            if(!masks) {
+              high_cells.emplace(Column_index::key(gi, gj), 1);
+              continue;
+            }
+            const std::uint32_t a = column.find(Column_index::key(gi / per, gj / per));
+            if(a != Key_map::none) // else no point lies in that cell
+              mask[a] |= std::uint64_t(1) << ((gj % per) * per + gi % per);
+          }
       }
     // The points under the high points of walls: the walls' lower parts.
-    if(!high_cells.empty())
+    if(masks) {
+      for(std::uint32_t c = 0; c < nc; ++c)
+        if(mask[c] != 0) {
+          const long ci = long(column.keys[c] & 0xFFFFFFFFu), cj = long(column.keys[c] >> 32);
+          for(const std::uint32_t* q = column.begin(c); q != column.end(c); ++q) {
+            const std::uint64_t key = fine_key(m_p[*q]);
+            const long li = long(key & 0xFFFFFFFFu) - per * ci, lj = long(key >> 32) - per * cj;
+            m_wall[*q] = li >= 0 && lj >= 0 && li < per && lj < per && ((mask[c] >> (lj * per + li)) & 1) ? 1 : 0;
+          }
+        }
+    } else if(!high_cells.empty())
       for(std::uint32_t i : active)
-        m_wall[i] = high_cells.count(fine_key(m_p[i])) ? 1 : 0;
+        m_wall[i] = high_cells.find(fine_key(m_p[i])) != Key_map::none ? 1 : 0;
   }
 
-  void build_graph()
+
+  // The graph of the points `active` (increasing).
+  void build_graph(std::vector<std::uint32_t> active)
   {
     // Nodes: the cells of side `cell` (or the points), numbered by their first point.
-    std::vector<std::uint32_t> active;
-    for(const auto& c : m_columns)
-      active.insert(active.end(), c.second.begin(), c.second.end());
-    std::sort(active.begin(), active.end());
     find_walls(active);
     if(!m_o.wall_nodes) // the walls never join an object: no nodes
       active.erase(std::remove_if(active.begin(), active.end(), [&](std::uint32_t i) { return m_wall[i] != 0; }),
                    active.end());
     m_node_of_point.assign(m_p.size(), none);
     std::vector<std::uint32_t> first_of_node;
-    std::unordered_map<std::uint64_t, std::uint32_t> cell; // with cells: key -> node
     if(m_o.cell > 0) {
-      cell.reserve(active.size() / 4 + 16);
+      Key_map cell(active.size() / 4 + 16); // key -> node
       for(std::uint32_t i : active) {
         const auto ins = cell.emplace(voxel_key(m_p[i][0], m_p[i][1], m_p[i][2], m_o.cell, m_lo) | wall_bit(i),
                                       std::uint32_t(first_of_node.size()));
         if(ins.second)
           first_of_node.push_back(i);
-        m_node_of_point[i] = ins.first->second;
+        m_node_of_point[i] = ins.first;
       }
     } else
       for(std::uint32_t i : active) {
@@ -305,6 +642,7 @@ private:
     }
     m_centroid.assign(n, P3{{0, 0, 0}});
     m_count.assign(n, 0);
+    std::vector<std::uint32_t> wall_nodes, other_nodes;
     for(std::size_t v = 0; v < n; ++v) {
       P3 c{{0, 0, 0}};
       for_members(v, [&](std::uint32_t i) {
@@ -314,15 +652,18 @@ private:
       const double k = double(m_member_first[v + 1] - m_member_first[v]);
       m_centroid[v] = {c[0] / k, c[1] / k, c[2] / k};
       m_count[v] = k;
-      (m_wall[first_of_node[v]] ? m_wall_node_columns : m_node_columns)[column_of(m_centroid[v][0], m_centroid[v][1])]
-        .push_back(std::uint32_t(v));
+      (m_wall[first_of_node[v]] ? wall_nodes : other_nodes).push_back(std::uint32_t(v));
     }
+    const auto centroid_column = [&](std::uint32_t v) { return column_of(m_centroid[v][0], m_centroid[v][1]); };
+    m_node_columns.assign(other_nodes, centroid_column);
+    m_wall_node_columns.assign(wall_nodes, centroid_column);
     // Edges: the k nearest nodes of every node, symmetrized, with weights
     // exp(-(d / sigma)^2) times the smaller point count of their two nodes. With cells, the
     // nearest are looked for among the nodes of the 3 x 3 x 3 cells around, then of larger blocks
     // while they hold fewer than k others (up to 7 x 7 x 7: a node farther than three cells is no
-    // neighbour). Without, in a kd-tree.
-    const int maximum_reach = 3;
+    // neighbour); the nodes by vertical stacks of cells, by increasing height. Without, in a
+    // kd-tree.
+    constexpr int maximum_reach = 3;
     std::vector<SAI::Vector_3d> c(n);
     std::vector<std::uint32_t> ids(n);
     for(std::size_t v = 0; v < n; ++v) {
@@ -332,37 +673,105 @@ private:
     const std::size_t k = m_o.neighbors;
     std::vector<std::uint32_t> knn(n * k, none);
     SAI::Point_tree tree;
+    Key_lists stacks; // the nodes off walls by their cells' columns (i, j), by increasing k
+    struct Stack_entry
+    {
+      SAI::Vector_3d c;
+      std::uint32_t k, v;
+    };
+    std::vector<Stack_entry> entries; // the nodes of `stacks.items`, with their centroids and k
+    std::vector<std::uint64_t> cell_key(n, 0);
     if(m_o.cell <= 0)
       tree = SAI::Point_tree(c, ids);
-    SAI::Parallel_workspaces<std::vector<std::pair<double, std::uint32_t>>> parallel(m_o.threads);
+    else {
+      for(std::size_t v = 0; v < n; ++v) {
+        const P3& q = m_p[first_of_node[v]];
+        cell_key[v] = voxel_key(q[0], q[1], q[2], m_o.cell, m_lo);
+      }
+      stacks.assign(other_nodes, [&](std::uint32_t v) {
+        return Column_index::key(long(cell_key[v] & 0x1FFFFF), long((cell_key[v] >> 21) & 0x1FFFFF));
+      });
+      for(std::size_t s = 0; s < stacks.size(); ++s)
+        std::sort(stacks.items.begin() + long(stacks.first[s]), stacks.items.begin() + long(stacks.first[s + 1]),
+                  [&](std::uint32_t a, std::uint32_t b) { return cell_key[a] < cell_key[b]; });
+      entries.reserve(stacks.items.size());
+      for(std::uint32_t u : stacks.items)
+        entries.push_back(Stack_entry{c[u], std::uint32_t(cell_key[u] >> 42), u});
+    }
+    struct Knn_workspace
+    {
+      std::vector<std::pair<double, std::uint32_t>> r;
+      // The stacks around the column of the last node (consecutive nodes often share it): per
+      // reach, whether known, and the stacks of the square, row by row.
+      long ci = -1, cj = -1;
+      bool known[maximum_reach] = {};
+      std::uint32_t around[maximum_reach][(2 * maximum_reach + 1) * (2 * maximum_reach + 1)];
+    };
+    SAI::Parallel_workspaces<Knn_workspace> parallel(m_o.threads);
     const std::size_t block = 256;
-    parallel.for_each(0, (n + block - 1) / block, [&](std::size_t b, std::vector<std::pair<double, std::uint32_t>>& r) {
+    parallel.for_each(0, (n + block - 1) / block, [&](std::size_t b, Knn_workspace& workspace) {
+      std::vector<std::pair<double, std::uint32_t>>& r = workspace.r;
+      workspace.ci = -1;
       for(std::size_t v = b * block; v < (std::min)(n, (b + 1) * block); ++v) {
         if(m_wall[first_of_node[v]])
           continue; // walls have no edges
         if(m_o.cell > 0) {
-          r.clear();
-          const P3& q = m_p[first_of_node[v]];
-          const std::uint64_t wb = wall_bit(first_of_node[v]);
-          const std::uint64_t key = voxel_key(q[0], q[1], q[2], m_o.cell, m_lo);
-          for(int reach = 1; reach <= maximum_reach; ++reach) {
-            for(int dk = -reach; dk <= reach; ++dk)
-              for(int dj = -reach; dj <= reach; ++dj)
-                for(int di = -reach; di <= reach; ++di) {
-                  if((std::max)((std::max)(std::abs(di), std::abs(dj)), std::abs(dk)) < reach)
-                    continue; // the inner blocks were done
-                  const std::uint64_t nk = voxel_neighbor(key, di, dj, dk);
-                  if(nk == no_voxel)
+          const std::uint64_t key = cell_key[v];
+          const long ci = long(key & 0x1FFFFF), cj = long((key >> 21) & 0x1FFFFF), ck = long(key >> 42);
+          if(ci != workspace.ci || cj != workspace.cj)
+            workspace.ci = ci, workspace.cj = cj, std::fill(workspace.known, workspace.known + maximum_reach, false);
+          // The nodes of the cube of half side `reach` cells.
+          const auto gather = [&](long reach) {
+            r.clear();
+            const long which = reach - 1;
+            std::uint32_t* around = workspace.around[which];
+            if(!workspace.known[which]) {
+              std::size_t a = 0;
+              for(long dj = -reach; dj <= reach; ++dj)
+                for(long di = -reach; di <= reach; ++di)
+                  around[a++] = ci + di < 0 || cj + dj < 0
+                                  ? Key_map::none
+                                  : stacks.find(Column_index::key(ci + di, cj + dj));
+              workspace.known[which] = true;
+            }
+            const std::uint32_t k0 = std::uint32_t((std::max)(0L, ck - reach)), k1 = std::uint32_t(ck + reach);
+            const SAI::Vector_3d cv = c[v];
+            std::size_t a = 0;
+            for(long dj = -reach; dj <= reach; ++dj)
+              for(long di = -reach; di <= reach; ++di) {
+                const std::uint32_t s = around[a++];
+                if(s == Key_map::none)
+                  continue;
+                const Stack_entry* e = entries.data() + stacks.first[s];
+                const Stack_entry* end = entries.data() + stacks.first[s + 1];
+                if(end - e > 8)
+                  e = std::lower_bound(e, end, k0, [](const Stack_entry& x, std::uint32_t z) { return x.k < z; });
+                for(; e != end && e->k <= k1; ++e) {
+                  if(e->k < k0)
                     continue;
-                  const auto it = cell.find(nk | wb);
-                  if(it != cell.end() && it->second != v)
-                    r.emplace_back((c[it->second] - c[v]).squared_length(), it->second);
+                  if(e->v != v)
+                    r.emplace_back((e->c - cv).squared_length(), e->v);
                 }
+              }
+          };
+          // The 3 x 3 x 3 cells, else the smallest block (up to 7 x 7 x 7) holding k others.
+          for(long reach = 1; reach <= maximum_reach; ++reach) {
+            gather(reach);
             if(r.size() >= k)
               break;
           }
+          // The k nearest (by distance, then index), in order.
           const std::size_t m = (std::min)(k, r.size());
-          std::partial_sort(r.begin(), r.begin() + long(m), r.end());
+          std::size_t kept = 0;
+          for(std::size_t j = 0; j < r.size(); ++j) {
+            const std::pair<double, std::uint32_t> x = r[j];
+            if(kept == m && !(x < r[m - 1]))
+              continue;
+            std::size_t f = kept < m ? kept++ : m - 1;
+            for(; f > 0 && x < r[f - 1]; --f)
+              r[f] = r[f - 1];
+            r[f] = x;
+          }
           for(std::size_t j = 0; j < m; ++j)
             knn[v * k + j] = r[j].second;
         } else {
@@ -374,31 +783,51 @@ private:
         }
       }
     });
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-    pairs.reserve(n * k);
+    // The edges, each once: from its first node unless the other holds it too and is smaller.
+    std::vector<char> emit(n * k, 0);
+    m_adjacent_first.assign(n + 1, 0);
     for(std::size_t v = 0; v < n; ++v)
       for(std::size_t m = 0; m < k; ++m) {
         const std::uint32_t u = knn[v * k + m];
-        if(u != none)
-          pairs.emplace_back((std::min)(std::uint32_t(v), u), (std::max)(std::uint32_t(v), u));
+        if(u == none)
+          break;
+        bool twice = false;
+        if(u < v)
+          for(std::size_t j = 0; j < k && knn[u * k + j] != none; ++j)
+            if(knn[u * k + j] == v) {
+              twice = true;
+              break;
+            }
+        if(!twice)
+          emit[v * k + m] = 1, ++m_adjacent_first[v + 1], ++m_adjacent_first[u + 1];
       }
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-    m_adjacent_first.assign(n + 1, 0);
-    for(const auto& e : pairs)
-      ++m_adjacent_first[e.first + 1], ++m_adjacent_first[e.second + 1];
     for(std::size_t v = 0; v < n; ++v)
       m_adjacent_first[v + 1] += m_adjacent_first[v];
-    m_adjacent.assign(2 * pairs.size(), 0);
-    m_adjacent_weight.assign(2 * pairs.size(), 0);
+    m_adjacent.assign(m_adjacent_first[n], 0);
+    m_adjacent_weight.assign(m_adjacent_first[n], 0);
     std::vector<std::size_t> fill(m_adjacent_first.begin(), m_adjacent_first.end() - 1);
     const double s2 = m_o.sigma * m_o.sigma;
-    for(const auto& e : pairs) {
-      const double d2 = (c[e.first] - c[e.second]).squared_length();
-      const double w = std::exp(-d2 / s2) * (std::min)(m_count[e.first], m_count[e.second]);
-      m_adjacent[fill[e.first]] = e.second, m_adjacent_weight[fill[e.first]++] = w;
-      m_adjacent[fill[e.second]] = e.first, m_adjacent_weight[fill[e.second]++] = w;
-    }
+    for(std::size_t v = 0; v < n; ++v)
+      for(std::size_t m = 0; m < k; ++m) {
+        if(!emit[v * k + m])
+          continue;
+        const std::uint32_t u = knn[v * k + m];
+        const std::uint32_t a = (std::min)(std::uint32_t(v), u), b = (std::max)(std::uint32_t(v), u);
+        const double d2 = (c[a] - c[b]).squared_length();
+        const double w = std::exp(-d2 / s2) * (std::min)(m_count[a], m_count[b]);
+        m_adjacent[fill[a]] = b, m_adjacent_weight[fill[a]++] = w;
+        m_adjacent[fill[b]] = a, m_adjacent_weight[fill[b]++] = w;
+      }
+    // Per node, its neighbours by increasing index (an insertion sort: the lists are short).
+    for(std::size_t v = 0; v < n; ++v)
+      for(std::size_t e = m_adjacent_first[v] + 1; e < m_adjacent_first[v + 1]; ++e) {
+        const std::uint32_t a = m_adjacent[e];
+        const double w = m_adjacent_weight[e];
+        std::size_t f = e;
+        for(; f > m_adjacent_first[v] && m_adjacent[f - 1] > a; --f)
+          m_adjacent[f] = m_adjacent[f - 1], m_adjacent_weight[f] = m_adjacent_weight[f - 1];
+        m_adjacent[f] = a, m_adjacent_weight[f] = w;
+      }
   }
 
   // Wall points have their own cells: a high bit of the key that voxel keys never use.
@@ -409,7 +838,8 @@ private:
   std::vector<char> m_wall;
   double m_side = 1.0;
   P3 m_lo{{0, 0, 0}};
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> m_columns, m_node_columns, m_wall_node_columns;
+  const Point_columns& m_pc;
+  Key_lists m_node_columns, m_wall_node_columns;
   std::vector<std::uint32_t> m_node_of_point, m_members, m_adjacent;
   std::vector<std::size_t> m_member_first, m_adjacent_first;
   std::vector<P3> m_centroid;
