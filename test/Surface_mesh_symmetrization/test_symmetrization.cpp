@@ -2,7 +2,8 @@
 // procedural symmetric shapes in random poses (within 0.5 degree), and the known planes of CGAL's
 // meshes; results do not depend on the pose or the thread count; symmetrize() brings a symmetric
 // shape bent by a smooth asymmetric warp back close to the unbent shape with a small symmetry
-// error and less distortion than the naive baseline; restore_asymmetry() gives the input back;
+// error and less distortion than the naive baseline; meshes too large for the isometric refinement
+// take growing constrained weights; restore_asymmetry() gives the input back;
 // enhance_symmetry() scales the residuals; the symmetric map of a symmetric mesh is exact, for a
 // reflection and for a rotation; transfer_vertex_attribute() maps one side's values onto the
 // other; Polyhedron_3 and vertex point maps work; bad input is refused with Bad_input.
@@ -314,6 +315,30 @@ TEST(Symmetrization, IsometricRefinementReachesTheTargetWithLessDistortionThanNa
                 1e-12)
       << name;
   }
+}
+
+TEST(Symmetrization, MeshesTooLargeForTheRefinementTakeGrowingConstrainedWeights)
+{
+  // With the refinement limit under its size, the posed man takes the escalating constrained
+  // steps (tracked mirror points between exact searches): it gets far below the error of the
+  // plain constrained steps, with less distortion than the naive baseline, and the error it
+  // reports is that of an exact search on the result.
+  const Mesh input = read_data_mesh("man.off");
+  const Symmetry s = detect(input, 1).front();
+  const SYI::Surface surface = surface_of(input);
+  SYI::Solver_symmetry ss;
+  ss.transform = SYI::affine_of(s, "test");
+  SYI::Symmetrization_options plain, escalating;
+  plain.target_error = 0;
+  plain.refinement_steps = 0;
+  escalating.refinement_limit = 1000;
+  const SYI::Symmetrization_output a = SYI::Symmetrizer(surface, {ss}, plain).run();
+  const SYI::Symmetrization_output b = SYI::Symmetrizer(surface, {ss}, escalating).run();
+  EXPECT_LT(b.error_after, 0.25 * a.error_after);
+  EXPECT_GT(b.iterations.size(), a.iterations.size());
+  const std::vector<Vector_3d> naive = SYI::naive_symmetrization(surface, ss.transform, 0);
+  EXPECT_LT(b.distortion, SYI::edge_distortion(surface, surface.points, naive));
+  EXPECT_NEAR(b.error_after, SYI::symmetry_error(surface, b.points, ss.transform, 0), 1e-12);
 }
 
 TEST(Symmetrization, LargerFinalWeightTradesDistortionForSymmetry)

@@ -190,7 +190,11 @@ leave edge lengths unchanged, so the two sides are fitted to each other where be
 \f$\rho\f$ starts at \f$10^3\f$ and grows by \f$\sqrt{10}\f$ per step (at most 14 steps,
 \f$\rho \le 10^6\f$); the refinement stops at the target, and the positions of the smallest
 error are kept: a smaller target gives a more symmetric and more distorted result (see the user
-manual, \ref SMSYSymmetrizationLimits). The result does not depend on the number of threads.
+manual, \ref SMSYSymmetrizationLimits). Larger meshes, while their error is above the target,
+take further constrained steps instead (at most 40): their weight starts at \f$10^4\f$ and grows
+tenfold, up to \f$10^6\f$, whenever a step gains less than 10%; between exact closest-point
+searches (every fourth step) the mirror points are followed across adjacent faces. The result
+does not depend on the number of threads.
 
 \tparam TriangleMesh a model of `FaceListGraph` (for example `CGAL::Surface_mesh` or
         `CGAL::Polyhedron_3`)

@@ -30,6 +30,12 @@
 //     asymmetry); each finer level is seeded by the displacements of the next coarser one,
 //     interpolated at the closest points of its surface, then takes the last steps and, on the
 //     input's resolution, the constrained ones;
+//   - meshes too large for the isometric refinement (finest level above `refinement_limit`):
+//     while the error is above the target, the constrained steps go on with a weight that starts
+//     at the schedule's last one and grows tenfold whenever a step gains less than 10% (up to
+//     `maximum_constrained_ratio`); between exact searches (every fourth step) the mirror points
+//     are tracked from the previous ones by a local descent over adjacent faces (track_mirrors()),
+//     a few triangles per vertex, and the matrix keeps its factorization;
 //   - isometric refinement (finest level, while the error is above the target): linearized
 //     steps that trade the symmetry error against the relative change of the edge lengths, all
 //     three coordinates free (refine_step()), the weight of the error growing per step.
@@ -85,6 +91,9 @@ struct Symmetrization_options
   std::size_t refinement_steps = 14;      // most steps of the isometric refinement
   double refinement_ratio = 1e3;          // its first weight of the symmetry error against the edge lengths
   std::size_t refinement_limit = 50000;   // vertices: larger meshes are not refined (their sagitta is small)
+  double maximum_constrained_ratio = 1e6; // the largest weight of the constrained steps of larger meshes
+  std::size_t maximum_constrained_steps = 40; // and the most constrained steps they take
+  std::size_t coarsest_extra_steps = 6;   // most further steps at the last weight of the schedule on the coarsest of several levels
   std::function<void(double)> progress;
 };
 
@@ -247,6 +256,9 @@ struct Level
   // Per vertex of the next finer level: its closest point on this level's original surface.
   std::vector<Surface_point> finer_on_this;
   std::vector<std::vector<double>> weights; // [symmetry][vertex] (empty: 1)
+  // Per face, the faces across its three edges (no_face at a border or a non-manifold edge);
+  // built on first use.
+  mutable std::vector<std::array<std::uint32_t, 3>> adjacent;
 };
 
 // Decimates `s` with CGAL's edge collapse (edge-length cost, midpoint placement) to about
@@ -423,53 +435,119 @@ public:
       // The steps of the schedule, then constrained steps until the error is below the
       // tolerance, stops decreasing by 5%, or `projection_iterations` were made; the positions of
       // the smallest error from the last step of the schedule on are kept.
-      std::size_t projections = 0;
+      std::size_t projections = 0, total_projections = 0, extra_steps = 0;
       std::vector<Vector_3d> best_x;
       double best_error = std::numeric_limits<double>::infinity();
+      bool last_tracked = false; // the error of the current positions is that of tracked mirrors
       double previous_constrained = std::numeric_limits<double>::infinity();
+      double previous_error = std::numeric_limits<double>::infinity();
+      // Finest level of a mesh too large for the refinement: growing constrained weights.
+      const bool escalate = l == 0 && !refinable(level) && m_o.target_error > 0 &&
+                            m_o.maximum_constrained_ratio > m_o.constrained_ratio;
+      // It starts from the schedule's last weight: a smaller one would undo the last steps.
+      m_constrained_ratio = escalate ? (std::max)(m_o.constrained_ratio, std::pow(10.0, m_o.schedule_exponent))
+                                     : m_o.constrained_ratio;
+      std::vector<std::vector<Mirror>> mirrors;
       for(std::size_t s = 0;; ++s) {
         const bool constrained = s + 1 >= alphas.size();
+        const bool coarsest = l > 0 && l + 1 == L;
         // Coarser levels only take the steps of the schedule: their constrained steps would fit
-        // their own (coarse) triangles to each other, and seed the finer level with that.
+        // their own (coarse) triangles to each other, and seed the finer level with that. The
+        // coarsest one takes further steps at the schedule's last weight while they gain 5%: the
+        // large-scale asymmetry is cheapest to remove there.
         if(constrained && l > 0) {
+          double e = 0;
           if(s > 0) {
             const Surface current{x, level.original.triangles};
             const Surface_index index(current);
-            const auto mirrors = mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
-            out.iterations.back().symmetry_error = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
+            mirrors = mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
+            e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
+            out.iterations.back().symmetry_error = e;
+            if(e < best_error) {
+              best_error = e;
+              best_x = x;
+            }
           }
-          break;
+          if(!coarsest || s < 2 || extra_steps >= m_o.coarsest_extra_steps || !(e < m_o.stall_ratio * previous_error))
+            break;
+          previous_error = e;
+          ++extra_steps;
+          solve(level, mirrors, alphas[alphas.size() - 2], false, x);
+          out.iterations.push_back(Iteration_record{l, alphas[alphas.size() - 2], 0.0});
+          --s; // stay on this step
+          continue;
         }
         const double alpha = constrained ? 1.0 : alphas[s];
         const Surface current{x, level.original.triangles};
-        std::vector<std::vector<Mirror>> mirrors;
-        {
+        bool tracked = false;
+        if(escalate && projections > 0 && total_projections % 4 != 0) {
+          mirrors = track_mirrors(level, x, mirrors);
+          tracked = true;
+        } else {
           const Surface_index index(current);
           mirrors = mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
         }
         if(s > 0) {
-          const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
+          double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
+          bool rechecked = false;
+          // Tracked mirrors leave out the vertices that only an exact search finds one for, which
+          // are the farthest: their error is checked once it is well below the target.
+          if(tracked && e <= 0.75 * m_o.target_error) {
+            const Surface_index index(current);
+            mirrors = mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
+            e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
+            rechecked = true;
+          }
           out.iterations.back().symmetry_error = e;
-          if(e < best_error && s + 2 >= alphas.size()) { // from the last step of the schedule
+          // Kept: the positions of the smallest exact error from the last step of the schedule on
+          // (the errors of tracked mirrors leave some vertices out: not comparable).
+          last_tracked = tracked && !rechecked;
+          if(!last_tracked && e < best_error && s + 2 >= alphas.size()) {
             best_error = e;
             best_x = x;
           }
           if(projections > 0) {
             // The first constrained step may pair vertices and raise the error for a step; after
-            // it, stop once a step gains less than 5%.
-            const bool stalled = projections >= 2 && e > m_o.stall_ratio * previous_constrained;
+            // it, stop once a step gains less than 5%. Large meshes above the target: the weight
+            // grows tenfold once a step gains less than 10%.
+            // An exact search after tracked ones is not compared with them: they leave out the
+            // vertices that only it finds a mirror point for.
+            const double reference = rechecked ? std::numeric_limits<double>::infinity() : previous_constrained;
+            const bool stalled = projections >= 2 && e > m_o.stall_ratio * reference;
+            const bool slow = projections >= 2 && e > 0.9 * reference;
             previous_constrained = e;
-            if(e <= m_o.symmetry_tolerance || projections >= m_o.projection_iterations || stalled)
+            if(escalate && e > m_o.target_error && total_projections < m_o.maximum_constrained_steps &&
+               (slow || projections >= m_o.projection_iterations) &&
+               m_constrained_ratio < m_o.maximum_constrained_ratio) {
+              m_constrained_ratio = (std::min)(m_o.maximum_constrained_ratio, m_constrained_ratio * 10);
+              projections = 1;
+              previous_constrained = std::numeric_limits<double>::infinity();
+            } else if(e <= m_o.symmetry_tolerance || projections >= m_o.projection_iterations || stalled ||
+                      (escalate && (e <= m_o.target_error || total_projections >= m_o.maximum_constrained_steps)))
               break;
           }
         }
         solve(level, mirrors, alpha, constrained, x);
-        if(constrained)
+        if(constrained) {
           ++projections;
+          ++total_projections;
+        }
         out.iterations.push_back(Iteration_record{l, alpha, 0.0});
         done_work += double(level.original.number_of_vertices());
         if(m_o.progress)
           m_o.progress((std::min)(0.99, done_work / (std::max)(1.0, total_work)));
+      }
+      if(last_tracked) { // the last positions, exactly
+        const Surface current{x, level.original.triangles};
+        const Surface_index index(current);
+        mirrors = mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
+        const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
+        out.iterations.back().symmetry_error = e;
+        if(e < best_error) {
+          best_x.clear();
+          if(l == 0)
+            out.mirrors = mirrors;
+        }
       }
       if(!best_x.empty())
         x.swap(best_x);
@@ -524,7 +602,7 @@ private:
     const std::size_t n = level.original.number_of_vertices();
     const double D = m_diagonal;
     const double h = m_levels.front().mean_edge > 0 ? m_levels.front().mean_edge : D;
-    const double rho = alpha >= 1 ? m_o.constrained_ratio : alpha / (1 - alpha);
+    const double rho = alpha >= 1 ? m_constrained_ratio : alpha / (1 - alpha);
     const double a_sym = rho / double(n);
     const double a_edge = m_o.shape_weight * (D * D) / (h * h) /
                           double((std::max)(std::size_t(1), level.edges.size()));
@@ -590,16 +668,23 @@ private:
     }
     // The matrix only depends on the level, alpha and the weights: its factorization is kept
     // for the next solve with the same ones (the constrained steps).
+    // Its pattern (edges and diagonal) only depends on the level: the ordering and symbolic
+    // analysis are made once per level.
     Factorization& F = m_factorization;
     if(!(F.level == &level && F.ratio == rho && F.weights == w)) {
       Sparse A(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
       A.setFromTriplets(tr.begin(), tr.end());
+      const bool analyzed = F.analyzed == &level;
       F.level = &level;
       F.ratio = rho;
       F.weights = w;
       F.direct = n <= m_o.direct_solver_limit;
       if(F.direct) {
-        F.ldlt.compute(A);
+        if(!analyzed) {
+          F.ldlt.analyzePattern(A);
+          F.analyzed = &level;
+        }
+        F.ldlt.factorize(A);
         F.direct = F.ldlt.info() == Eigen::Success;
       }
       if(!F.direct) {
@@ -620,6 +705,75 @@ private:
         if(std::isfinite(sol(Eigen::Index(i))))
           x[i][c] = sol(Eigen::Index(i));
     }
+  }
+
+  // The mirror points of positions `x` found from `previous` ones (same connectivity, slightly
+  // moved): from each previous mirror face, a descent to edge-adjacent faces whose normal is
+  // compatible while the distance to the vertex's transformed position decreases. A few
+  // triangles per vertex, no tree; the result is a local minimum next to the previous mirror
+  // point. The vertices that had one keep one (even if its face turned incompatible), so that
+  // the weights, hence the matrix and its factorization, stay those of the last exact search.
+  std::vector<std::vector<Mirror>> track_mirrors(const Level& level, const std::vector<Vector_3d>& x,
+                                                 const std::vector<std::vector<Mirror>>& previous) const
+  {
+    const std::size_t n = level.original.number_of_vertices();
+    const Surface current{x, level.original.triangles};
+    const std::vector<Vector_3d> vn = current.vertex_normals();
+    const std::vector<Vector_3d> fn = current.face_normals();
+    const std::vector<std::array<std::uint32_t, 3>>& adjacent = face_adjacency(level);
+    std::vector<std::vector<Mirror>> result(previous.size(), std::vector<Mirror>(n));
+    SAI::Parallel_workspaces<char> parallel(m_o.number_of_threads);
+    const std::size_t block = 1024;
+    for(std::size_t k = 0; k < previous.size(); ++k) {
+      const Affine_3d& inv = m_inverses[k];
+      const Matrix_3d nm = inv.normal_matrix();
+      parallel.for_each(0, (n + block - 1) / block, [&](std::size_t b, char&) {
+        for(std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i) {
+          const Mirror& p = previous[k][i];
+          if(!p.found || !(vn[i].squared_length() > 0))
+            continue;
+          const Vector_3d q = inv(x[i]);
+          const Vector_3d m = inv.transform_normal(vn[i], nm);
+          const auto on_face = [&](std::uint32_t f, std::array<double, 3>& bary) {
+            const auto c = current.corners(f);
+            return (closest_point_on_triangle(q, c[0], c[1], c[2], bary) - q).squared_length();
+          };
+          std::uint32_t face = p.face;
+          std::array<double, 3> bary;
+          double d2 = on_face(face, bary);
+          for(int step = 0; step < 32; ++step) {
+            const std::uint32_t at = face;
+            for(std::size_t e = 0; e < 3; ++e) {
+              const std::uint32_t g = adjacent[at][e];
+              if(g == Surface_index::no_face || !(SAI::dot(fn[g], m) > 0))
+                continue;
+              std::array<double, 3> bg;
+              const double dg = on_face(g, bg);
+              if(dg < d2) {
+                d2 = dg;
+                face = g;
+                bary = bg;
+              }
+            }
+            if(face == at)
+              break;
+          }
+          Mirror& r = result[k][i];
+          r.found = true;
+          r.face = face;
+          r.barycentric = bary;
+          r.distance = std::sqrt(d2);
+        }
+      });
+    }
+    return result;
+  }
+
+  const std::vector<std::array<std::uint32_t, 3>>& face_adjacency(const Level& level) const
+  {
+    if(level.adjacent.empty())
+      level.adjacent = internal::face_adjacency(level.original.triangles, [](std::size_t) { return true; });
+    return level.adjacent;
   }
 
   bool refinable(const Level& level) const
@@ -761,6 +915,7 @@ private:
   struct Factorization
   {
     const Level* level = nullptr;
+    const Level* analyzed = nullptr; // the level of the symbolic analysis
     double ratio = -1;
     std::vector<double> weights;
     bool direct = true;
@@ -768,6 +923,7 @@ private:
     Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> cg;
   };
   mutable Factorization m_factorization;
+  double m_constrained_ratio = 100; // alpha / (1 - alpha) of the current constrained steps
 
   double weight(const Level& level, std::size_t k, std::size_t i) const
   {

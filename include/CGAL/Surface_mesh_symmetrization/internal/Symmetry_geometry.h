@@ -544,6 +544,39 @@ struct Surface_point
   bool found = false;
 };
 
+// Per face, the face across each of its edges (edge e from corner e to corner e + 1), among the
+// faces `keep(f)` accepts, for the edges of exactly two of them; none (the largest uint32)
+// otherwise.
+template <typename Keep>
+std::vector<std::array<std::uint32_t, 3>> face_adjacency(const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                                                        const Keep& keep)
+{
+  const std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
+  std::vector<std::array<std::uint32_t, 3>> adjacent(triangles.size(), {{none, none, none}});
+  std::vector<std::array<std::uint32_t, 4>> edges; // (smaller vertex, larger, face, edge)
+  edges.reserve(3 * triangles.size());
+  for(std::size_t f = 0; f < triangles.size(); ++f) {
+    if(!keep(f))
+      continue;
+    for(std::uint32_t e = 0; e < 3; ++e) {
+      const std::uint32_t a = triangles[f][e], b = triangles[f][(e + 1) % 3];
+      edges.push_back({{(std::min)(a, b), (std::max)(a, b), std::uint32_t(f), e}});
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  for(std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i + 1;
+    while(j < edges.size() && edges[j][0] == edges[i][0] && edges[j][1] == edges[i][1])
+      ++j;
+    if(j == i + 2) {
+      adjacent[edges[i][2]][edges[i][3]] = edges[i + 1][2];
+      adjacent[edges[i + 1][2]][edges[i + 1][3]] = edges[i][2];
+    }
+    i = j;
+  }
+  return adjacent;
+}
+
 // Closest-point queries on a fixed surface (the positions are copied). Faces of zero area are
 // left out of the queries. Queries are thread-safe.
 class Surface_index
@@ -660,28 +693,7 @@ public:
     std::call_once(*m_local_once, [this]() {
       m_grid = Distance_grid(m_surface);
       // Faces across each edge (edges of exactly two faces of positive area).
-      m_adjacent.assign(m_surface.triangles.size(), {{no_face, no_face, no_face}});
-      std::vector<std::array<std::uint32_t, 4>> edges; // (smaller vertex, larger, face, edge)
-      edges.reserve(3 * m_triangles.size());
-      for(std::size_t f = 0; f < m_surface.triangles.size(); ++f) {
-        if(m_kept_of_face[f] == no_face)
-          continue;
-        for(std::uint32_t e = 0; e < 3; ++e) {
-          const std::uint32_t a = m_surface.triangles[f][e], b = m_surface.triangles[f][(e + 1) % 3];
-          edges.push_back({{(std::min)(a, b), (std::max)(a, b), std::uint32_t(f), e}});
-        }
-      }
-      std::sort(edges.begin(), edges.end());
-      for(std::size_t i = 0; i < edges.size();) {
-        std::size_t j = i + 1;
-        while(j < edges.size() && edges[j][0] == edges[i][0] && edges[j][1] == edges[i][1])
-          ++j;
-        if(j == i + 2) {
-          m_adjacent[edges[i][2]][edges[i][3]] = edges[i + 1][2];
-          m_adjacent[edges[i + 1][2]][edges[i + 1][3]] = edges[i][2];
-        }
-        i = j;
-      }
+      m_adjacent = face_adjacency(m_surface.triangles, [this](std::size_t f) { return m_kept_of_face[f] != no_face; });
     });
   }
 
