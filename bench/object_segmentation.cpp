@@ -17,11 +17,12 @@
 //
 // The time per object excludes the graph shared by the objects of a call; the figures "with the
 // shared graph" add its time shared out equally among the call's objects.
-// Measured (seeds 2,3, --dense-points 4000000 --dense-length 60 --pcl-objects 60): min-cut with the
-// automatic radius 86.2% / 99.4% over 93 objects, 0.19 ms per object (median), 0.96 ms with the
-// shared graph (0.035 s per street of 10^6 points); on PCL's 110 objects PCL 80.4% / 85.6% in
-// 15 ms, ours 86.7% / 99.5% in 0.25 ms (60 times faster; 1.0 ms and 15 times with the shared
-// graph, 14 to 16 times from run to run).
+// Measured (seeds 2,3, --dense-points 4000000 --dense-length 60 --pcl-objects 60, 2 cores shared
+// with other work): min-cut with the automatic radius 86.2% / 99.4% over 93 objects, 0.13 ms per
+// object (median), 0.72 to 0.75 ms with the shared graph (0.027 to 0.030 s per street of 10^6
+// points); on PCL's 110 objects PCL 80.4% / 85.6% in 15 to 16 ms, ours 86.7% / 99.5% in 0.17 ms
+// (about 90 times faster; 0.80 to 0.85 ms and 18 to 19.5 times with the shared graph, from run to
+// run).
 //
 // The defaults were tuned on seed 1 (--seeds 1); report on other seeds. JSON to stdout and FILE, progress and
 // tables to stderr.

@@ -22,6 +22,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <numeric>
 #include <unordered_map>
@@ -71,6 +72,20 @@ struct Segmentation_output
 };
 
 inline double horizontal_distance(const P3& a, const P3& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); }
+
+// Whether horizontal_distance(a, b) <= radius, without std::hypot unless the squared distance
+// lies within a relative 1e-12 of the squared radius (both are within a few units in the last
+// place of the exact values: elsewhere they agree).
+inline bool horizontally_within(const P3& a, const P3& b, double radius)
+{
+  const double dx = a[0] - b[0], dy = a[1] - b[1];
+  const double q = dx * dx + dy * dy, r2 = radius * radius;
+  if(q < r2 * (1 - 1e-12))
+    return true;
+  if(q > r2 * (1 + 1e-12))
+    return false;
+  return std::hypot(dx, dy) <= radius;
+}
 
 // A hash map from 64-bit keys (never all ones) to 32-bit values, by open addressing with linear
 // probing: the grids of the segmentation look up millions of keys, most of them absent.
@@ -286,7 +301,11 @@ public:
   {
     if(points.size() >= std::size_t(none))
       throw CGAL::Shape_analysis::Bad_input("segment_objects: too many points (at most 2^32 - 2)");
-    checked_bounds(points, m_side, "segment_objects", m_lo, m_hi);
+    {
+      P3 lo, hi; // locals: the loop keeps them in registers
+      checked_bounds(points, m_side, "segment_objects", lo, hi);
+      m_lo = lo, m_hi = hi;
+    }
     const std::size_t n = points.size();
     const long ni = long((m_hi[0] - m_lo[0]) / m_side) + 1, nj = long((m_hi[1] - m_lo[1]) / m_side) + 1;
     m_column_of_point.assign(n, none);
@@ -300,18 +319,35 @@ public:
           m_lists.index.emplace(k, std::uint32_t(j * ni + i));
           m_lists.keys[std::size_t(j * ni + i)] = k;
         }
+      // Consecutive points mostly share their column (a scan's order): the counts and the fills
+      // go by runs of points of one column.
       m_lists.first.assign(m_lists.keys.size() + 1, 0);
+      std::uint32_t run_column = none;
+      std::size_t run = 0;
       for(std::size_t i = 0; i < n; ++i) {
         const std::uint32_t c = std::uint32_t(long((m_p[i][1] - m_lo[1]) / m_side) * ni + long((m_p[i][0] - m_lo[0]) / m_side));
         m_column_of_point[i] = c;
-        ++m_lists.first[c + 1];
+        if(c != run_column) {
+          if(run_column != none)
+            m_lists.first[run_column + 1] += run;
+          run_column = c, run = 0;
+        }
+        ++run;
       }
+      if(run_column != none)
+        m_lists.first[run_column + 1] += run;
       for(std::size_t c = 0; c < m_lists.keys.size(); ++c)
         m_lists.first[c + 1] += m_lists.first[c];
       m_lists.items.resize(n);
       std::vector<std::size_t> fill(m_lists.first.begin(), m_lists.first.end() - 1);
-      for(std::size_t i = 0; i < n; ++i)
-        m_lists.items[fill[m_column_of_point[i]]++] = std::uint32_t(i);
+      for(std::size_t i = 0; i < n;) {
+        const std::uint32_t c = m_column_of_point[i];
+        std::uint32_t* out = m_lists.items.data() + fill[c];
+        const std::size_t from = i;
+        for(; i < n && m_column_of_point[i] == c; ++i)
+          *out++ = std::uint32_t(i);
+        fill[c] += i - from;
+      }
     } else {
       std::vector<std::uint32_t> all(n);
       std::iota(all.begin(), all.end(), 0u);
@@ -337,6 +373,7 @@ public:
 
   const std::vector<P3>& points() const { return m_p; }
   const P3& lo() const { return m_lo; }
+  const P3& hi() const { return m_hi; }
   double side() const { return m_side; }
   const Key_lists& lists() const { return m_lists; }
   std::uint32_t column_of_point(std::size_t i) const { return m_column_of_point[i]; }
@@ -356,12 +393,20 @@ public:
   // The points within `radius` of (x, y) horizontally, increasing.
   void points_within(const P3& at, double radius, std::vector<std::uint32_t>& out) const
   {
+    points_within(at, radius, out, [](std::uint32_t) { return true; });
+    std::sort(out.begin(), out.end());
+  }
+
+  // The points within `radius` of (x, y) horizontally for which keep(i) holds, in no particular
+  // order.
+  template <typename Keep>
+  void points_within(const P3& at, double radius, std::vector<std::uint32_t>& out, const Keep& keep) const
+  {
     out.clear();
     for_columns(at, radius, [&](std::uint32_t i) {
-      if(horizontal_distance(m_p[i], at) <= radius)
+      if(keep(i) && horizontally_within(m_p[i], at, radius))
         out.push_back(i);
     }, m_lists);
-    std::sort(out.begin(), out.end());
   }
 
 private:
@@ -405,11 +450,20 @@ public:
             near_column[c] = 1;
         }
     }
+    // (By runs of points of one column: consecutive points mostly share it.)
     std::vector<std::uint32_t> near;
-    for(std::size_t i = 0; i < m_p.size(); ++i)
-      if(near_column[columns.column_of_point(i)])
-        near.push_back(std::uint32_t(i));
-    build_graph(near);
+    near.reserve(m_p.size());
+    for(std::size_t i = 0; i < m_p.size();) {
+      const std::uint32_t c = columns.column_of_point(i);
+      std::size_t j = i + 1;
+      while(j < m_p.size() && columns.column_of_point(j) == c)
+        ++j;
+      if(near_column[c])
+        for(; i < j; ++i)
+          near.push_back(std::uint32_t(i));
+      i = j;
+    }
+    build_graph(std::move(near));
   }
 
   const std::vector<P3>& points() const { return m_p; }
@@ -420,13 +474,19 @@ public:
     m_pc.points_within(at, radius, out);
   }
 
+  // The points off walls within `radius` of (x, y) horizontally, in no particular order.
+  void points_off_walls_within(const P3& at, double radius, std::vector<std::uint32_t>& out) const
+  {
+    m_pc.points_within(at, radius, out, [&](std::uint32_t i) { return !is_wall(i); });
+  }
+
   // The graph nodes whose centroids lie within `radius` of (x, y) horizontally, increasing; the
   // nodes of walls only `with_walls` (they have no edges: they never join an object).
   void nodes_within(const P3& at, double radius, std::vector<std::uint32_t>& out, bool with_walls = false) const
   {
     out.clear();
     const auto add = [&](std::uint32_t v) {
-      if(horizontal_distance(m_centroid[v], at) <= radius)
+      if(horizontally_within(m_centroid[v], at, radius))
         out.push_back(v);
     };
     for_columns(at, radius, add, m_node_columns);
@@ -465,55 +525,117 @@ private:
     lists.for_square(m_lo, m_side, at, radius, f);
   }
 
-  // Flags the points of `active` (increasing) that lie on a wall (see Segmentation_options).
-  void find_walls(const std::vector<std::uint32_t>& active)
+  // Flags the points of `active` (increasing) that lie on a wall (see Segmentation_options), and
+  // with `drop_walls` removes them from `active`. The passes go over `active` in order (the
+  // points' columns found once), not column by column.
+  void find_walls(std::vector<std::uint32_t>& active, bool drop_walls)
   {
     m_wall.assign(m_p.size(), 0);
     const double s = m_o.wall_column;
-    if(!(m_o.wall_height > 0) || !(s > 0))
+    if(!(m_o.wall_height > 0) || !(s > 0) || active.empty())
       return;
-    Key_lists column;
-    column.assign(active, [&](std::uint32_t i) {
-      return Column_index::key(long((m_p[i][0] - m_lo[0]) / s), long((m_p[i][1] - m_lo[1]) / s));
-    });
-    const std::size_t nc = column.size();
-    // Per column, its lowest height when it is tall, NaN otherwise.
-    const double not_tall = std::numeric_limits<double>::quiet_NaN();
-    std::vector<double> tall(nc, not_tall);
-    std::vector<std::uint32_t> tall_columns;
-    for(std::uint32_t c = 0; c < nc; ++c) {
-      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-      for(const std::uint32_t* q = column.begin(c); q != column.end(c); ++q)
-        lo = (std::min)(lo, m_p[*q][2]), hi = (std::max)(hi, m_p[*q][2]);
-      if(hi - lo > m_o.wall_height)
-        tall[c] = lo, tall_columns.push_back(c);
+    // The columns of side s, numbered as they are met; per active point its column; per column
+    // its key and the range of its heights.
+    const auto column_key = [&](const P3& q) {
+      return Column_index::key(long((q[0] - m_lo[0]) / s), long((q[1] - m_lo[1]) / s));
+    };
+    Column_index column;
+    {
+      const std::uint64_t k0 = column_key(m_pc.lo()), k1 = column_key(m_pc.hi());
+      column.reset(long(k0 & 0xFFFFFFFFu), long(k0 >> 32), long(k1 & 0xFFFFFFFFu), long(k1 >> 32),
+                   active.size() / 4 + 16);
     }
-    const double high = 2.0; // above the lowest point of its column: above the small objects
+    // The fine cells (of side half the tolerance) of the high points of walls. When they divide
+    // the columns exactly (a power of two of them along each axis, as by default: then a fine
+    // cell lies in a single column), per point its fine cell in its column (`per` x `per` of
+    // them, row by row; `outside` when there is none).
     const double fine = 0.5 * m_o.wall_tolerance;
     const auto fine_key = [&](const P3& q) {
       return Column_index::key(long((q[0] - m_lo[0]) / fine), long((q[1] - m_lo[1]) / fine));
     };
-    struct Stack { double lo, hi; int n; std::uint64_t key; };
-    Key_map stack_of; // fine cell -> its stack of high points of walls
-    std::vector<Stack> stacks;
-    Key_map high_cells;
-    const int reach = int(std::ceil(0.5 / s));
     const long per = long(std::lround(s / fine));
     const bool nested = per >= 1 && per <= 16 && (per & (per - 1)) == 0 && double(per) * fine == s;
-    std::vector<Stack> local(nested ? std::size_t(per * per) : 0);
-    // Per tall column, the moments of its high points (relative to the grid's corner).
-    std::vector<std::array<double, 6>> moments(nc);
-    for(std::uint32_t c : tall_columns) {
-      std::array<double, 6> m{{0, 0, 0, 0, 0, 0}};
-      for(const std::uint32_t* q = column.begin(c); q != column.end(c); ++q)
-        if(m_p[*q][2] > tall[c] + high) {
-          const double x = m_p[*q][0] - m_lo[0], y = m_p[*q][1] - m_lo[1];
-          m[0] += 1, m[1] += x, m[2] += y, m[3] += x * x, m[4] += x * y, m[5] += y * y;
-        }
-      moments[c] = m;
+    const bool masks = nested && per * per <= 64; // then a column's fine cells are bits of a mask
+    const unsigned char outside = 255;
+    std::vector<unsigned char> fine_of(masks ? active.size() : 0, outside);
+    std::vector<std::uint64_t> keys;
+    std::vector<std::array<double, 2>> range; // lowest, highest
+    std::vector<std::uint32_t> column_of(active.size());
+    // (Consecutive points mostly share their column: the range goes by runs.)
+    std::uint64_t run_key = 0;
+    std::uint32_t run_column = none;
+    double run_lo = 0, run_hi = 0;
+    for(std::size_t a = 0; a < active.size(); ++a) {
+      const P3& q = m_p[active[a]];
+      std::uint64_t key;
+      if(masks) {
+        // The column from the fine cell: s = per fine exactly, per a power of two, so the
+        // quotient by s is that by `fine` over per exactly, and its integer part that of the
+        // fine cell over per.
+        const std::uint64_t f = fine_key(q);
+        const long fi = long(f & 0xFFFFFFFFu), fj = long(f >> 32);
+        key = Column_index::key(fi / per, fj / per);
+        fine_of[a] = (unsigned char)((fj % per) * per + fi % per);
+      } else
+        key = column_key(q);
+      if(run_column == none || key != run_key) {
+        if(run_column != none)
+          range[run_column] = {{run_lo, run_hi}};
+        const auto ins = column.emplace(key, std::uint32_t(keys.size()));
+        if(ins.second)
+          keys.push_back(key), range.push_back({{q[2], q[2]}});
+        run_key = key, run_column = ins.first, run_lo = range[run_column][0], run_hi = range[run_column][1];
+      }
+      run_lo = (std::min)(run_lo, q[2]), run_hi = (std::max)(run_hi, q[2]);
+      column_of[a] = run_column;
     }
+    if(run_column != none)
+      range[run_column] = {{run_lo, run_hi}};
+    const std::size_t nc = keys.size();
+    // Per column, its lowest height when it is tall, NaN otherwise.
+    const double not_tall = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> tall(nc, not_tall);
+    std::vector<std::uint32_t> tall_columns;
+    for(std::uint32_t c = 0; c < nc; ++c)
+      if(range[c][1] - range[c][0] > m_o.wall_height)
+        tall[c] = range[c][0], tall_columns.push_back(c);
+    if(tall_columns.empty())
+      return;
+    const double high = 2.0; // above the lowest point of its column: above the small objects
+    // Per tall column, the moments of its high points (relative to the grid's corner); the high
+    // points (positions in `active`).
+    std::vector<std::array<double, 6>> moments(nc, std::array<double, 6>{{0, 0, 0, 0, 0, 0}});
+    std::vector<std::uint32_t> high_points;
+    high_points.reserve(active.size());
+    // (By runs of points of one column, the sums in registers: the same additions in the same
+    // order.)
+    for(std::size_t a = 0; a < active.size();) {
+      const std::uint32_t c = column_of[a];
+      if(std::isnan(tall[c])) {
+        for(++a; a < active.size() && column_of[a] == c; ++a) {
+        }
+        continue;
+      }
+      const double above = tall[c] + high;
+      double m0 = moments[c][0], m1 = moments[c][1], m2 = moments[c][2], m3 = moments[c][3], m4 = moments[c][4],
+             m5 = moments[c][5];
+      for(; a < active.size() && column_of[a] == c; ++a) {
+        const P3& q = m_p[active[a]];
+        if(q[2] > above) {
+          const double x = q[0] - m_lo[0], y = q[1] - m_lo[1];
+          m0 += 1, m1 += x, m2 += y, m3 += x * x, m4 += x * y, m5 += y * y;
+          high_points.push_back(std::uint32_t(a));
+        }
+      }
+      moments[c] = {{m0, m1, m2, m3, m4, m5}};
+    }
+    // The tall columns whose high points around (within 0.5 m) spread along a line longer than
+    // 0.2 m: a wall (or a tree; a pole does not).
+    const int reach = int(std::ceil(0.5 / s));
+    std::vector<char> spread(nc, 0);
+    std::size_t spread_columns = 0;
     for(std::uint32_t c : tall_columns) {
-      const std::uint64_t key = column.keys[c];
+      const std::uint64_t key = keys[c];
       const long ci = long(key & 0xFFFFFFFFu), cj = long(key >> 32);
       double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
       for(long dj = -reach; dj <= reach; ++dj)
@@ -533,43 +655,73 @@ private:
       const double l1 = 0.5 * (a + d) + std::sqrt(0.25 * (a - d) * (a - d) + b * b);
       if(!(std::sqrt(l1) > 0.2))
         continue; // a pole
-      // A wall (or a tree): its high points mark the fine cells under them. When the fine cells
-      // divide the columns exactly (a power of two of them along each axis, as by default: then
-      // a fine cell lies in a single column), the stacks of the column are gathered in a small
-      // array of its fine cells.
-      if(nested)
-        std::fill(local.begin(), local.end(), Stack{0, 0, 0, 0});
-      for(const std::uint32_t* q = column.begin(c); q != column.end(c); ++q) {
-        const P3& p = m_p[*q];
-        if(p[2] > tall[c] + high) {
+      spread[c] = 1, ++spread_columns;
+    }
+    // The high points of those columns mark the fine cells under them, with the range of their
+    // heights; column by column (the high points grouped by column, in order). When the fine
+    // cells divide the columns exactly (a power of two of them along each axis, as by default:
+    // then a fine cell lies in a single column), the stacks of the column are gathered in a small
+    // array of its fine cells; else (and for a point rounded out of its column) in a map.
+    struct Stack { double lo, hi; int n; std::uint64_t key; };
+    Key_map stack_of; // fine cell -> its stack of high points of walls
+    std::vector<Stack> stacks;
+    std::vector<Stack> local(nested ? std::size_t(per * per) : 0);
+    const auto add = [](Stack& st, double z, std::uint64_t key) {
+      if(st.n == 0)
+        st = Stack{z, z, 0, key};
+      st.lo = (std::min)(st.lo, z), st.hi = (std::max)(st.hi, z), ++st.n;
+    };
+    if(spread_columns > 0) {
+      std::vector<std::uint32_t> first(nc + 1, 0);
+      for(std::uint32_t a : high_points)
+        if(spread[column_of[a]])
+          ++first[column_of[a] + 1];
+      for(std::size_t c = 0; c < nc; ++c)
+        first[c + 1] += first[c];
+      std::vector<std::uint32_t> by_column(first[nc]);
+      {
+        std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+        for(std::uint32_t a : high_points)
+          if(spread[column_of[a]])
+            by_column[fill[column_of[a]]++] = a;
+      }
+      for(std::uint32_t c = 0; c < nc; ++c) {
+        if(first[c] == first[c + 1])
+          continue;
+        const long ci = long(keys[c] & 0xFFFFFFFFu), cj = long(keys[c] >> 32);
+        if(nested)
+          std::fill(local.begin(), local.end(), Stack{0, 0, 0, 0});
+        for(std::uint32_t h = first[c]; h < first[c + 1]; ++h) {
+          const P3& p = m_p[active[by_column[h]]];
+          if(masks && fine_of[by_column[h]] != outside) {
+            const long f = fine_of[by_column[h]], li = f % per, lj = f / per;
+            add(local[std::size_t(f)], p[2], Column_index::key(per * ci + li, per * cj + lj));
+            continue;
+          }
           const std::uint64_t key = fine_key(p);
           if(nested) {
             const long li = long(key & 0xFFFFFFFFu) - per * ci, lj = long(key >> 32) - per * cj;
             if(li >= 0 && lj >= 0 && li < per && lj < per) {
-              Stack& st = local[std::size_t(lj * per + li)];
-              if(st.n == 0)
-                st = Stack{p[2], p[2], 0, key};
-              st.lo = (std::min)(st.lo, p[2]), st.hi = (std::max)(st.hi, p[2]), ++st.n;
+              add(local[std::size_t(lj * per + li)], p[2], key);
               continue;
             }
           }
           const auto ins = stack_of.emplace(key, std::uint32_t(stacks.size()));
           if(ins.second)
-            stacks.push_back(Stack{p[2], p[2], 0, key});
-          Stack& st = stacks[ins.first];
-          st.lo = (std::min)(st.lo, p[2]), st.hi = (std::max)(st.hi, p[2]), ++st.n;
+            stacks.push_back(Stack{0, 0, 0, key});
+          add(stacks[ins.first], p[2], key);
         }
+        if(nested)
+          for(const Stack& st : local)
+            if(st.n > 0)
+              stacks.push_back(st);
       }
-      if(nested)
-        for(const Stack& st : local)
-          if(st.n > 0)
-            stacks.push_back(st);
     }
     // A wall's fine cells stack several high points over a metre at least (a crown's do not).
     // The cells of walls and their eight neighbours: with nested fine cells (at most 8 x 8 per
     // column), bits of a mask per column; else in a map.
-    const bool masks = nested && per * per <= 64;
     std::vector<std::uint64_t> mask(masks ? nc : 0, 0);
+    Key_map high_cells;
     for(const Stack& st : stacks)
       if(st.n >= 3 && st.hi - st.lo > 1.0) {
         const long fi = long(st.key & 0xFFFFFFFFu), fj = long(st.key >> 32);
@@ -588,19 +740,26 @@ private:
           }
       }
     // The points under the high points of walls: the walls' lower parts.
-    if(masks) {
-      for(std::uint32_t c = 0; c < nc; ++c)
-        if(mask[c] != 0) {
-          const long ci = long(column.keys[c] & 0xFFFFFFFFu), cj = long(column.keys[c] >> 32);
-          for(const std::uint32_t* q = column.begin(c); q != column.end(c); ++q) {
-            const std::uint64_t key = fine_key(m_p[*q]);
-            const long li = long(key & 0xFFFFFFFFu) - per * ci, lj = long(key >> 32) - per * cj;
-            m_wall[*q] = li >= 0 && lj >= 0 && li < per && lj < per && ((mask[c] >> (lj * per + li)) & 1) ? 1 : 0;
-          }
-        }
-    } else if(!high_cells.empty())
-      for(std::uint32_t i : active)
-        m_wall[i] = high_cells.find(fine_key(m_p[i])) != Key_map::none ? 1 : 0;
+    // (With `drop_walls`, the points off walls move to the front of `active` as they are met.)
+    std::size_t off = 0;
+    if(masks)
+      for(std::size_t a = 0; a < active.size(); ++a) {
+        const std::uint32_t i = active[a];
+        const std::uint64_t m = mask[column_of[a]];
+        const bool wall = m != 0 && fine_of[a] != outside && ((m >> fine_of[a]) & 1) != 0;
+        m_wall[i] = wall ? 1 : 0;
+        active[off] = i;
+        off += wall && drop_walls ? 0 : 1; // (no branch)
+      }
+    else {
+      if(!high_cells.empty())
+        for(std::uint32_t i : active)
+          m_wall[i] = high_cells.find(fine_key(m_p[i])) != Key_map::none ? 1 : 0;
+      for(std::size_t a = 0; a < active.size(); ++a)
+        if(!drop_walls || !m_wall[active[a]])
+          active[off++] = active[a];
+    }
+    active.resize(off);
   }
 
 
@@ -608,20 +767,22 @@ private:
   void build_graph(std::vector<std::uint32_t> active)
   {
     // Nodes: the cells of side `cell` (or the points), numbered by their first point.
-    find_walls(active);
-    if(!m_o.wall_nodes) // the walls never join an object: no nodes
-      active.erase(std::remove_if(active.begin(), active.end(), [&](std::uint32_t i) { return m_wall[i] != 0; }),
-                   active.end());
+    find_walls(active, !m_o.wall_nodes); // without wall nodes, the walls never join an object
     m_node_of_point.assign(m_p.size(), none);
     std::vector<std::uint32_t> first_of_node;
     if(m_o.cell > 0) {
       Key_map cell(active.size() / 4 + 16); // key -> node
+      std::uint64_t last_key = 0;
+      std::uint32_t last_node = none; // of the previous point (consecutive points often share it)
       for(std::uint32_t i : active) {
-        const auto ins = cell.emplace(voxel_key(m_p[i][0], m_p[i][1], m_p[i][2], m_o.cell, m_lo) | wall_bit(i),
-                                      std::uint32_t(first_of_node.size()));
-        if(ins.second)
-          first_of_node.push_back(i);
-        m_node_of_point[i] = ins.first;
+        const std::uint64_t key = voxel_key(m_p[i][0], m_p[i][1], m_p[i][2], m_o.cell, m_lo) | wall_bit(i);
+        if(last_node == none || key != last_key) {
+          const auto ins = cell.emplace(key, std::uint32_t(first_of_node.size()));
+          if(ins.second)
+            first_of_node.push_back(i);
+          last_key = key, last_node = ins.first;
+        }
+        m_node_of_point[i] = last_node;
       }
     } else
       for(std::uint32_t i : active) {
@@ -698,109 +859,137 @@ private:
       for(std::uint32_t u : stacks.items)
         entries.push_back(Stack_entry{c[u], std::uint32_t(cell_key[u] >> 42), u});
     }
-    struct Knn_workspace
-    {
-      std::vector<std::pair<double, std::uint32_t>> r;
-      // The stacks around the column of the last node (consecutive nodes often share it): per
-      // reach, whether known, and the stacks of the square, row by row.
-      long ci = -1, cj = -1;
-      bool known[maximum_reach] = {};
-      std::uint32_t around[maximum_reach][(2 * maximum_reach + 1) * (2 * maximum_reach + 1)];
+    // The k nearest (by distance, then index) among the pairs r, in order, into knn's row of v
+    // (the m smallest pairs whatever the order of r: the candidates are distinct).
+    const auto keep_nearest = [&](std::vector<std::pair<double, std::uint32_t>>& r, std::size_t v) {
+      const std::size_t m = (std::min)(k, r.size());
+      std::size_t kept = 0;
+      for(std::size_t j = 0; j < r.size(); ++j) {
+        const std::pair<double, std::uint32_t> x = r[j];
+        if(kept == m && !(x < r[m - 1]))
+          continue;
+        std::size_t f = kept < m ? kept++ : m - 1;
+        for(; f > 0 && x < r[f - 1]; --f)
+          r[f] = r[f - 1];
+        r[f] = x;
+      }
+      for(std::size_t j = 0; j < m; ++j)
+        knn[v * k + j] = r[j].second;
     };
-    SAI::Parallel_workspaces<Knn_workspace> parallel(m_o.threads);
-    const std::size_t block = 256;
-    parallel.for_each(0, (n + block - 1) / block, [&](std::size_t b, Knn_workspace& workspace) {
-      std::vector<std::pair<double, std::uint32_t>>& r = workspace.r;
-      workspace.ci = -1;
-      for(std::size_t v = b * block; v < (std::min)(n, (b + 1) * block); ++v) {
-        if(m_wall[first_of_node[v]])
-          continue; // walls have no edges
-        if(m_o.cell > 0) {
-          const std::uint64_t key = cell_key[v];
-          const long ci = long(key & 0x1FFFFF), cj = long((key >> 21) & 0x1FFFFF), ck = long(key >> 42);
-          if(ci != workspace.ci || cj != workspace.cj)
-            workspace.ci = ci, workspace.cj = cj, std::fill(workspace.known, workspace.known + maximum_reach, false);
-          // The nodes of the cube of half side `reach` cells.
-          const auto gather = [&](long reach) {
-            r.clear();
-            const long which = reach - 1;
-            std::uint32_t* around = workspace.around[which];
-            if(!workspace.known[which]) {
-              std::size_t a = 0;
-              for(long dj = -reach; dj <= reach; ++dj)
-                for(long di = -reach; di <= reach; ++di)
-                  around[a++] = ci + di < 0 || cj + dj < 0
-                                  ? Key_map::none
-                                  : stacks.find(Column_index::key(ci + di, cj + dj));
-              workspace.known[which] = true;
-            }
-            const std::uint32_t k0 = std::uint32_t((std::max)(0L, ck - reach)), k1 = std::uint32_t(ck + reach);
-            const SAI::Vector_3d cv = c[v];
-            std::size_t a = 0;
-            for(long dj = -reach; dj <= reach; ++dj)
-              for(long di = -reach; di <= reach; ++di) {
-                const std::uint32_t s = around[a++];
-                if(s == Key_map::none)
-                  continue;
-                const Stack_entry* e = entries.data() + stacks.first[s];
-                const Stack_entry* end = entries.data() + stacks.first[s + 1];
-                if(end - e > 8)
-                  e = std::lower_bound(e, end, k0, [](const Stack_entry& x, std::uint32_t z) { return x.k < z; });
-                for(; e != end && e->k <= k1; ++e) {
-                  if(e->k < k0)
-                    continue;
-                  if(e->v != v)
-                    r.emplace_back((e->c - cv).squared_length(), e->v);
-                }
+    typedef std::vector<std::pair<double, std::uint32_t>> Candidates;
+    if(m_o.cell > 0) {
+      // Stack by stack, its nodes by increasing height. The stacks around by rings (ring 0: the
+      // stack itself; ring d: the stacks d columns away), found once per stack, each with a cursor
+      // on its first node not below the cube where the ring entered (the cubes rise with the
+      // nodes). The cube of half side `reach` is that of reach - 1 and the nodes of its new
+      // layers (heights ck +- reach) in the rings already in, and those of the new ring.
+      constexpr std::size_t ring_size = 8 * maximum_reach; // the most stacks in a ring
+      SAI::Parallel_workspaces<Candidates> parallel(m_o.threads);
+      const std::size_t block = 32;
+      parallel.for_each(0, (stacks.size() + block - 1) / block, [&](std::size_t b, Candidates& r) {
+        struct Ring_stack { const Stack_entry *cursor, *begin, *end; };
+        for(std::size_t s = b * block; s < (std::min)(stacks.size(), (b + 1) * block); ++s) {
+          const long ci = long(stacks.keys[s] & 0xFFFFFFFFu), cj = long(stacks.keys[s] >> 32);
+          bool known[maximum_reach + 1] = {};
+          std::size_t size[maximum_reach + 1] = {};
+          Ring_stack ring[maximum_reach + 1][ring_size];
+          for(const Stack_entry* node = entries.data() + stacks.first[s]; node != entries.data() + stacks.first[s + 1];
+              ++node) {
+            const std::uint32_t v = node->v;
+            const long ck = long(node->k);
+            const SAI::Vector_3d cv = node->c;
+            const auto take = [&](const Stack_entry* e) {
+              if(e->v != v)
+                r.emplace_back((e->c - cv).squared_length(), e->v);
+            };
+            // The nodes of ring d within the cube of half side `reach` (as the ring enters).
+            const auto enter = [&](long d, long reach) {
+              if(!known[d]) {
+                std::size_t a = 0;
+                for(long dj = -d; dj <= d; ++dj)
+                  for(long di = -d; di <= d; ++di) {
+                    if((std::max)(std::abs(di), std::abs(dj)) != d || ci + di < 0 || cj + dj < 0)
+                      continue;
+                    const std::uint32_t t = stacks.find(Column_index::key(ci + di, cj + dj));
+                    if(t != Key_map::none)
+                      ring[d][a++] = Ring_stack{entries.data() + stacks.first[t], entries.data() + stacks.first[t],
+                                                entries.data() + stacks.first[t + 1]};
+                  }
+                size[d] = a, known[d] = true;
               }
-          };
-          // The 3 x 3 x 3 cells, else the smallest block (up to 7 x 7 x 7) holding k others.
-          for(long reach = 1; reach <= maximum_reach; ++reach) {
-            gather(reach);
-            if(r.size() >= k)
-              break;
+              const std::uint32_t k0 = std::uint32_t((std::max)(0L, ck - reach)), k1 = std::uint32_t(ck + reach);
+              for(std::size_t a = 0; a < size[d]; ++a) {
+                Ring_stack& t = ring[d][a];
+                const Stack_entry* e = t.cursor;
+                while(e != t.end && e->k < k0)
+                  ++e;
+                t.cursor = e;
+                for(; e != t.end && e->k <= k1; ++e)
+                  take(e);
+              }
+            };
+            // The nodes of ring d at heights ck +- reach (the ring entered at a smaller reach).
+            const auto extend = [&](long d, long reach) {
+              const long below = ck - reach, above = ck + reach;
+              for(std::size_t a = 0; a < size[d]; ++a) {
+                const Ring_stack& t = ring[d][a];
+                for(const Stack_entry* e = t.cursor; e != t.begin && long((e - 1)->k) >= below;) {
+                  --e;
+                  if(long(e->k) == below)
+                    take(e);
+                }
+                for(const Stack_entry* e = t.cursor; e != t.end && long(e->k) <= above; ++e)
+                  if(long(e->k) == above)
+                    take(e);
+              }
+            };
+            // The 3 x 3 x 3 cells, else the smallest block (up to 7 x 7 x 7) holding k others.
+            r.clear();
+            enter(0, 1), enter(1, 1);
+            for(long reach = 2; reach <= maximum_reach && r.size() < k; ++reach) {
+              for(long d = 0; d < reach; ++d)
+                extend(d, reach);
+              enter(reach, reach);
+            }
+            keep_nearest(r, v);
           }
-          // The k nearest (by distance, then index), in order.
-          const std::size_t m = (std::min)(k, r.size());
-          std::size_t kept = 0;
-          for(std::size_t j = 0; j < r.size(); ++j) {
-            const std::pair<double, std::uint32_t> x = r[j];
-            if(kept == m && !(x < r[m - 1]))
-              continue;
-            std::size_t f = kept < m ? kept++ : m - 1;
-            for(; f > 0 && x < r[f - 1]; --f)
-              r[f] = r[f - 1];
-            r[f] = x;
-          }
-          for(std::size_t j = 0; j < m; ++j)
-            knn[v * k + j] = r[j].second;
-        } else {
+        }
+      });
+    } else {
+      SAI::Parallel_workspaces<Candidates> parallel(m_o.threads);
+      const std::size_t block = 256;
+      parallel.for_each(0, (n + block - 1) / block, [&](std::size_t b, Candidates& r) {
+        for(std::size_t v = b * block; v < (std::min)(n, (b + 1) * block); ++v) {
+          if(m_wall[first_of_node[v]])
+            continue; // walls have no edges
           tree.k_nearest(c[v], k + 1, r);
           std::size_t m = 0;
           for(const auto& q : r)
             if(q.second != v && m < k && m_wall[first_of_node[q.second]] == m_wall[first_of_node[v]])
               knn[v * k + m++] = q.second;
         }
-      }
-    });
+      });
+    }
     // The edges, each once: from its first node unless the other holds it too and is smaller.
     std::vector<char> emit(n * k, 0);
     m_adjacent_first.assign(n + 1, 0);
-    for(std::size_t v = 0; v < n; ++v)
+    for(std::size_t v = 0; v < n; ++v) {
+      std::size_t degree = 0;
       for(std::size_t m = 0; m < k; ++m) {
         const std::uint32_t u = knn[v * k + m];
         if(u == none)
           break;
         bool twice = false;
-        if(u < v)
-          for(std::size_t j = 0; j < k && knn[u * k + j] != none; ++j)
-            if(knn[u * k + j] == v) {
-              twice = true;
-              break;
-            }
-        if(!twice)
-          emit[v * k + m] = 1, ++m_adjacent_first[v + 1], ++m_adjacent_first[u + 1];
+        if(u < v) {
+          const std::uint32_t* row = knn.data() + u * k; // `none` never matches: a full scan
+          for(std::size_t j = 0; j < k; ++j)
+            twice |= row[j] == v;
+        }
+        const char once = twice ? 0 : 1; // (no branch)
+        emit[v * k + m] = once, degree += std::size_t(once), m_adjacent_first[u + 1] += std::size_t(once);
       }
+      m_adjacent_first[v + 1] += degree;
+    }
     for(std::size_t v = 0; v < n; ++v)
       m_adjacent_first[v + 1] += m_adjacent_first[v];
     m_adjacent.assign(m_adjacent_first[n], 0);
@@ -978,7 +1167,7 @@ inline double background_penalty(double d, double R, const Segmentation_options&
 // The hard foreground: the point nearest to the vertical segment from the location up to
 // `height` above it (the thesis takes the point nearest to the segment's top; the segment
 // prefers the object to a wall right behind it), the nearest to the top among equally near
-// ones, and its three nearest neighbours, among `candidates`; empty when there is none.
+// ones, and its three nearest neighbours, among `candidates` (in any order); empty when there is none.
 inline std::vector<std::uint32_t> foreground_seeds(const std::vector<P3>& p, const std::vector<std::uint32_t>& candidates,
                                                    const P3& location, double height)
 {
@@ -998,7 +1187,7 @@ inline std::vector<std::uint32_t> foreground_seeds(const std::vector<P3>& p, con
   double best_d = to_segment(p[best]), best_top = d2(p[best], target);
   for(std::uint32_t i : candidates) {
     const double d = to_segment(p[i]), top = d2(p[i], target);
-    if(d < best_d || (d == best_d && top < best_top)) // candidates increase: ties keep the first
+    if(d < best_d || (d == best_d && (top < best_top || (top == best_top && i < best)))) // ties: the first point
       best_d = d, best_top = top, best = i;
   }
   std::vector<std::pair<double, std::uint32_t>> near;
@@ -1018,17 +1207,9 @@ inline std::vector<std::uint32_t> foreground_seeds(const std::vector<P3>& p, con
 inline std::vector<std::uint32_t> object_seeds(const Segmentation_index& index, const P3& location, double R,
                                                const Segmentation_options& o, std::vector<std::uint32_t>& candidates)
 {
-  const auto off_walls = [&]() {
-    candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
-                                    [&](std::uint32_t i) { return index.is_wall(i); }),
-                     candidates.end());
-  };
-  index.points_within(location, (std::min)(R + o.ramp_width, 2.0), candidates);
-  off_walls();
-  if(candidates.empty()) {
-    index.points_within(location, R + o.ramp_width, candidates);
-    off_walls();
-  }
+  index.points_off_walls_within(location, (std::min)(R + o.ramp_width, 2.0), candidates);
+  if(candidates.empty())
+    index.points_off_walls_within(location, R + o.ramp_width, candidates);
   return foreground_seeds(index.points(), candidates, location, o.foreground_height);
 }
 
