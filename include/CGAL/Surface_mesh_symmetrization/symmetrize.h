@@ -192,9 +192,11 @@ leave edge lengths unchanged, so the two sides are fitted to each other where be
 error are kept: a smaller target gives a more symmetric and more distorted result (see the user
 manual, \ref SMSYSymmetrizationLimits). Larger meshes, while their error is above the target,
 take further constrained steps instead (at most 40): their weight starts at \f$10^4\f$ and grows
-tenfold, up to \f$10^6\f$, whenever a step gains less than 10%; between exact closest-point
-searches (every fourth step) the mirror points are followed across adjacent faces. The result
-does not depend on the number of threads.
+tenfold, up to \f$10^5\f$, whenever a step gains less than 10%; between exact closest-point
+searches (every fourth step) the mirror points are followed across adjacent faces. Then up to 4
+steps of the refinement, at its largest weight, move only the vertices whose mirror distance is
+above twice the target, the corners of their mirror faces and one ring around them. The result does not
+depend on the number of threads.
 
 \tparam TriangleMesh a model of `FaceListGraph` (for example `CGAL::Surface_mesh` or
         `CGAL::Polyhedron_3`)

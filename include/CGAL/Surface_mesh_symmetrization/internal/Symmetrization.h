@@ -51,6 +51,8 @@
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Midpoint_placement.h>
 
 #include <Eigen/IterativeLinearSolvers>
+
+#include <numeric>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
@@ -90,10 +92,12 @@ struct Symmetrization_options
   double target_error = 1e-4;             // relative to the diagonal: the refinement stops below it
   std::size_t refinement_steps = 14;      // most steps of the isometric refinement
   double refinement_ratio = 1e3;          // its first weight of the symmetry error against the edge lengths
-  std::size_t refinement_limit = 50000;   // vertices: larger meshes are not refined (their sagitta is small)
-  double maximum_constrained_ratio = 1e6; // the largest weight of the constrained steps of larger meshes
+  std::size_t refinement_limit = 50000;   // vertices: larger meshes are refined locally (refine_locally())
+  double maximum_constrained_ratio = 1e5; // the largest weight of the constrained steps of larger meshes
   std::size_t maximum_constrained_steps = 40; // and the most constrained steps they take
   std::size_t coarsest_extra_steps = 6;   // most further steps at the last weight of the schedule on the coarsest of several levels
+  std::size_t local_refinement_steps = 4; // most steps of the local refinement of larger meshes
+  std::size_t local_refinement_rings = 1; // neighbour rings around its vertices
   std::function<void(double)> progress;
 };
 
@@ -335,28 +339,39 @@ public:
     for(const Solver_symmetry& s : symmetries)
       finest.weights.push_back(s.vertex_weight);
     m_levels.push_back(std::move(finest));
-    const std::size_t max_levels = o.number_of_levels == 0 ? 8 : o.number_of_levels;
-    while(m_levels.size() < max_levels) {
-      const Surface& fine = m_levels.back().original;
-      std::size_t used = 0;
-      {
-        std::vector<char> u(fine.points.size(), 0);
-        for(const auto& t : fine.triangles)
-          for(std::uint32_t v : t)
-            u[v] = 1;
-        for(char c : u)
-          used += c ? 1 : 0;
+    // The error of the input (an exact search, in parallel) while the levels are made (serial).
+    const std::vector<std::vector<double>> finest_weights = m_levels.front().weights;
+    SAI::Parallel_workspaces<char> both(o.number_of_threads);
+    both.for_each(0, 2, [&](std::size_t job, char&) {
+      if(job == 1) {
+        const Surface_index index(m_input);
+        const auto mirrors = mirror_points(m_input, index, m_inverses, true, o.number_of_threads);
+        m_error_before = rms_mirror_distance(mirrors, finest_weights) / m_diagonal;
+        return;
       }
-      const std::size_t target = used / 8;
-      if(o.number_of_levels == 0 && target < o.coarsest_level_size / 2)
-        break;
-      if(target < 20)
-        break;
-      Level coarse;
-      if(!decimate(fine, target, coarse.original))
-        break;
-      m_levels.push_back(std::move(coarse));
-    }
+      const std::size_t max_levels = o.number_of_levels == 0 ? 8 : o.number_of_levels;
+      while(m_levels.size() < max_levels) {
+        const Surface& fine = m_levels.back().original;
+        std::size_t used = 0;
+        {
+          std::vector<char> u(fine.points.size(), 0);
+          for(const auto& t : fine.triangles)
+            for(std::uint32_t v : t)
+              u[v] = 1;
+          for(char c : u)
+            used += c ? 1 : 0;
+        }
+        const std::size_t target = used / 8;
+        if(o.number_of_levels == 0 && target < o.coarsest_level_size / 2)
+          break;
+        if(target < 20)
+          break;
+        Level coarse;
+        if(!decimate(fine, target, coarse.original))
+          break;
+        m_levels.push_back(std::move(coarse));
+      }
+    });
     // Links between levels and the weights of coarser levels (the weight of the closest point).
     for(std::size_t l = 1; l < m_levels.size(); ++l) {
       const Surface& fine = m_levels[l - 1].original;
@@ -398,11 +413,7 @@ public:
     Symmetrization_output out;
     for(const Level& l : m_levels)
       out.level_sizes.push_back(l.original.number_of_vertices());
-    {
-      const Surface_index index(m_input);
-      const auto mirrors = mirror_points(m_input, index, m_inverses, true, m_o.number_of_threads);
-      out.error_before = rms_mirror_distance(mirrors, m_levels.front().weights) / m_diagonal;
-    }
+    out.error_before = m_error_before;
     // Work counted for progress: vertices times steps.
     double total_work = 0, done_work = 0;
     const std::size_t L = m_levels.size();
@@ -553,6 +564,8 @@ public:
         x.swap(best_x);
       if(l == 0 && refinable(level))
         refine(level, x, out);
+      else if(escalate && m_o.local_refinement_steps > 0)
+        refine_locally(level, x, out);
     }
     out.points = x;
     {
@@ -811,6 +824,87 @@ private:
     x.swap(best_x);
   }
 
+  // Meshes too large for the refinement, while their error is above the target: its steps, at
+  // its largest weight of the error, on the vertices whose mirror distance is above twice the target,
+  // the corners of their mirror faces and `local_refinement_rings` rings of neighbours around
+  // them, all others staying (a few percent of the vertices hold most of the squared error).
+  // Each step takes new mirror points (exact search); the positions of the smallest error are
+  // kept.
+  void refine_locally(const Level& level, std::vector<Vector_3d>& x, Symmetrization_output& out) const
+  {
+    const std::size_t n = level.original.number_of_vertices();
+    const std::uint32_t none = Surface_index::no_face;
+    const auto exact = [&](const std::vector<Vector_3d>& at) {
+      const Surface current{at, level.original.triangles};
+      const Surface_index index(current);
+      return mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
+    };
+    std::vector<std::vector<Mirror>> mirrors = out.mirrors.empty() ? exact(x) : out.mirrors;
+    double best_error = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
+    out.mirrors = mirrors;
+    // Vertex neighbours.
+    std::vector<std::size_t> first(n + 1, 0);
+    for(const auto& e : level.edges)
+      ++first[e.first + 1], ++first[e.second + 1];
+    for(std::size_t i = 0; i < n; ++i)
+      first[i + 1] += first[i];
+    std::vector<std::uint32_t> neighbours(first[n]);
+    {
+      std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+      for(const auto& e : level.edges)
+        neighbours[fill[e.first]++] = e.second, neighbours[fill[e.second]++] = e.first;
+    }
+    std::vector<Vector_3d> best_x = x;
+    const double rho = 1000 * m_o.refinement_ratio;
+    const double threshold = 2 * m_o.target_error * m_diagonal;
+    for(std::size_t step = 0; step < m_o.local_refinement_steps && best_error > m_o.target_error; ++step) {
+      std::vector<char> on(n, 0);
+      std::vector<std::uint32_t> front;
+      for(std::size_t k = 0; k < mirrors.size(); ++k)
+        for(std::size_t i = 0; i < n; ++i) {
+          const Mirror& m = mirrors[k][i];
+          if(!m.found || !(m.distance > threshold) || !(weight(level, k, i) > 0))
+            continue;
+          for(std::uint32_t v : {std::uint32_t(i), level.original.triangles[m.face][0],
+                                 level.original.triangles[m.face][1], level.original.triangles[m.face][2]})
+            if(!on[v]) {
+              on[v] = 1;
+              front.push_back(v);
+            }
+        }
+      if(front.empty())
+        break;
+      for(std::size_t ring = 0; ring < m_o.local_refinement_rings; ++ring) {
+        std::vector<std::uint32_t> next;
+        for(std::uint32_t v : front)
+          for(std::size_t q = first[v]; q < first[v + 1]; ++q)
+            if(!on[neighbours[q]]) {
+              on[neighbours[q]] = 1;
+              next.push_back(neighbours[q]);
+            }
+        front.swap(next);
+      }
+      std::vector<std::uint32_t> unknown(n, none);
+      std::uint32_t count = 0;
+      for(std::size_t i = 0; i < n; ++i)
+        if(on[i])
+          unknown[i] = count++;
+      refine_step(level, mirrors, rho, x, &unknown);
+      mirrors = exact(x);
+      const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
+      out.iterations.push_back(Iteration_record{0, 1.0, e});
+      const bool gained = e < m_o.stall_ratio * best_error;
+      if(e < best_error) {
+        best_error = e;
+        best_x = x;
+        out.mirrors = mirrors;
+      }
+      if(!gained)
+        break;
+    }
+    x.swap(best_x);
+  }
+
   // One step of the isometric refinement: the displacements d_i of the vertices minimize the
   // linearized
   //   rho / (n D^2) sum_ik w_ik |r_ik + L_k d_i - sum_c b_c d_c|^2
@@ -823,10 +917,24 @@ private:
   // leave the edge lengths unchanged: the two sides meet where their triangulations do not match
   // at the least cost in distortion, which the constrained steps (edge vectors kept) cannot do.
   // The 3n coordinates are coupled by L_k and by the edge directions: one sparse LDL^T solve.
+  // With `active` (per vertex its unknown, `Surface_index::no_face` for a vertex that stays), only
+  // the active vertices move: the terms of the others are constants.
   void refine_step(const Level& level, const std::vector<std::vector<Mirror>>& mirrors, double rho,
-                   std::vector<Vector_3d>& x) const
+                   std::vector<Vector_3d>& x, const std::vector<std::uint32_t>* active = nullptr) const
   {
     const std::size_t n = level.original.number_of_vertices();
+    const std::uint32_t none = Surface_index::no_face;
+    std::vector<std::uint32_t> identity;
+    if(active == nullptr) {
+      identity.resize(n);
+      std::iota(identity.begin(), identity.end(), 0u);
+      active = &identity;
+    }
+    const std::vector<std::uint32_t>& unknown = *active;
+    std::size_t m_unknowns = 0;
+    for(std::uint32_t u : unknown)
+      if(u != none)
+        m_unknowns = (std::max)(m_unknowns, std::size_t(u) + 1);
     const double D = m_diagonal;
     const double h = m_levels.front().mean_edge > 0 ? m_levels.front().mean_edge : D;
     const double a_err = rho / (double(n) * D * D);
@@ -834,13 +942,21 @@ private:
     const double eta = 0.01, mu = 1e-4;
     const double a_disp = mu / (double(n) * h * h);
     std::vector<Triplet> tr;
-    tr.reserve(16 * 9 * n * mirrors.size() + 36 * level.edges.size() + 3 * n);
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(3 * n));
+    tr.reserve(16 * 9 * m_unknowns * mirrors.size() + 36 * level.edges.size() + 3 * m_unknowns);
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(3 * m_unknowns));
     const auto block = [&](std::size_t u, std::size_t v, const Matrix_3d& m, double c) {
+      const std::uint32_t iu = unknown[u], iv = unknown[v];
+      if(iu == none || iv == none)
+        return;
       for(int a = 0; a < 3; ++a)
         for(int b = 0; b < 3; ++b)
           if(m[std::size_t(a)][b] != 0)
-            tr.emplace_back(Eigen::Index(3 * u + std::size_t(a)), Eigen::Index(3 * v + std::size_t(b)), c * m[std::size_t(a)][b]);
+            tr.emplace_back(Eigen::Index(3 * std::size_t(iu) + std::size_t(a)), Eigen::Index(3 * std::size_t(iv) + std::size_t(b)),
+                            c * m[std::size_t(a)][b]);
+    };
+    const auto add_rhs = [&](std::size_t u, int a, double value) {
+      if(unknown[u] != none)
+        rhs(Eigen::Index(3 * std::size_t(unknown[u]) + std::size_t(a))) += value;
     };
     for(std::size_t k = 0; k < mirrors.size(); ++k) {
       const Affine_3d& inv = m_inverses[k];
@@ -859,24 +975,28 @@ private:
         if(!m.found || !(c > 0))
           continue;
         const auto& f = level.original.triangles[m.face];
+        if(unknown[i] == none && unknown[f[0]] == none && unknown[f[1]] == none && unknown[f[2]] == none)
+          continue;
         const Vector_3d p = x[f[0]] * m.barycentric[0] + x[f[1]] * m.barycentric[1] + x[f[2]] * m.barycentric[2];
         const Vector_3d r = inv(x[i]) - p;
         block(i, i, LtL, c);
         const Vector_3d Ltr = SAI::multiply(Lt, r);
         for(int a = 0; a < 3; ++a)
-          rhs(Eigen::Index(3 * i + std::size_t(a))) -= c * Ltr[a];
+          add_rhs(i, a, -c * Ltr[a]);
         for(int u = 0; u < 3; ++u) {
           const double bu = m.barycentric[std::size_t(u)];
           block(i, f[std::size_t(u)], Lt, -c * bu);
           block(f[std::size_t(u)], i, L, -c * bu);
           for(int a = 0; a < 3; ++a)
-            rhs(Eigen::Index(3 * f[std::size_t(u)] + std::size_t(a))) += c * bu * r[a];
+            add_rhs(f[std::size_t(u)], a, c * bu * r[a]);
           for(int v = 0; v < 3; ++v)
             block(f[std::size_t(u)], f[std::size_t(v)], I, c * bu * m.barycentric[std::size_t(v)]);
         }
       }
     }
     for(const auto& e : level.edges) {
+      if(unknown[e.first] == none && unknown[e.second] == none)
+        continue;
       const Vector_3d d = x[e.first] - x[e.second];
       const double l = d.length();
       const double l0 = (level.original.points[e.first] - level.original.points[e.second]).length();
@@ -893,22 +1013,27 @@ private:
       block(e.first, e.second, G, -a_edge);
       block(e.second, e.first, G, -a_edge);
       for(int a = 0; a < 3; ++a) {
-        rhs(Eigen::Index(3 * e.first + std::size_t(a))) -= a_edge * g[a] * r;
-        rhs(Eigen::Index(3 * e.second + std::size_t(a))) += a_edge * g[a] * r;
+        add_rhs(e.first, a, -a_edge * g[a] * r);
+        add_rhs(e.second, a, a_edge * g[a] * r);
       }
     }
-    for(std::size_t i = 0; i < 3 * n; ++i)
+    for(std::size_t i = 0; i < 3 * m_unknowns; ++i)
       tr.emplace_back(Eigen::Index(i), Eigen::Index(i), a_disp);
-    Sparse A(static_cast<Eigen::Index>(3 * n), static_cast<Eigen::Index>(3 * n));
+    Sparse A(static_cast<Eigen::Index>(3 * m_unknowns), static_cast<Eigen::Index>(3 * m_unknowns));
     A.setFromTriplets(tr.begin(), tr.end());
     Eigen::SimplicialLDLT<Sparse> ldlt(A);
     if(ldlt.info() != Eigen::Success)
       return;
     const Eigen::VectorXd delta = ldlt.solve(rhs);
-    for(std::size_t i = 0; i < n; ++i)
-      for(int a = 0; a < 3; ++a)
-        if(std::isfinite(delta(Eigen::Index(3 * i + std::size_t(a)))))
-          x[i][a] += delta(Eigen::Index(3 * i + std::size_t(a)));
+    for(std::size_t i = 0; i < n; ++i) {
+      if(unknown[i] == none)
+        continue;
+      for(int a = 0; a < 3; ++a) {
+        const double v = delta(Eigen::Index(3 * std::size_t(unknown[i]) + std::size_t(a)));
+        if(std::isfinite(v))
+          x[i][a] += v;
+      }
+    }
   }
 
   // The factorization of the last solve's matrix.
@@ -924,6 +1049,7 @@ private:
   };
   mutable Factorization m_factorization;
   double m_constrained_ratio = 100; // alpha / (1 - alpha) of the current constrained steps
+  double m_error_before = 0;        // RMS mirror distance of the input, relative to the diagonal
 
   double weight(const Level& level, std::size_t k, std::size_t i) const
   {
