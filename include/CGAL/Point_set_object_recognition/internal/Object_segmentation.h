@@ -270,10 +270,10 @@ struct Key_lists
   const std::uint32_t* begin(std::uint32_t list) const { return items.data() + first[list]; }
   const std::uint32_t* end(std::uint32_t list) const { return items.data() + first[list + 1]; }
 
-  // Calls f on the items of the lists of the squares (keyed by their column and row of side
-  // `side` from `lo`) that meet the square of half side `radius` around `at`.
-  template <typename F>
-  void for_square(const P3& lo, double side, const P3& at, double radius, const F& f) const
+  // Calls g(i, j, list) for the squares (keyed by their column i and row j of side `side` from
+  // `lo`) that have a list and meet the square of half side `radius` around `at`.
+  template <typename G>
+  void for_square_lists(const P3& lo, double side, const P3& at, double radius, const G& g) const
   {
     const long i0 = (std::max)(0L, long(std::floor((at[0] - radius - lo[0]) / side)));
     const long i1 = long(std::floor((at[0] + radius - lo[0]) / side));
@@ -283,9 +283,18 @@ struct Key_lists
       for(long i = i0; i <= i1; ++i) {
         const std::uint32_t c = find(Column_index::key(i, j));
         if(c != Key_map::none)
-          for(const std::uint32_t* q = begin(c); q != end(c); ++q)
-            f(*q);
+          g(i, j, c);
       }
+  }
+
+  // Calls f on the items of those lists.
+  template <typename F>
+  void for_square(const P3& lo, double side, const P3& at, double radius, const F& f) const
+  {
+    for_square_lists(lo, side, at, radius, [&](long, long, std::uint32_t c) {
+      for(const std::uint32_t* q = begin(c); q != end(c); ++q)
+        f(*q);
+    });
   }
 };
 
@@ -433,23 +442,14 @@ public:
       return;
     // The columns within `reach` of a location, and their points.
     std::vector<char> near_column(columns.lists().size(), 0);
-    for(const P3& l : locations) {
-      const long i0 = (std::max)(0L, long(std::floor((l[0] - reach - m_lo[0]) / m_side)));
-      const long i1 = long(std::floor((l[0] + reach - m_lo[0]) / m_side));
-      const long j0 = (std::max)(0L, long(std::floor((l[1] - reach - m_lo[1]) / m_side)));
-      const long j1 = long(std::floor((l[1] + reach - m_lo[1]) / m_side));
-      for(long j = j0; j <= j1; ++j)
-        for(long i = i0; i <= i1; ++i) {
-          const double x0 = m_lo[0] + double(i) * m_side, y0 = m_lo[1] + double(j) * m_side;
-          const double dx = (std::max)(0.0, (std::max)(x0 - l[0], l[0] - x0 - m_side));
-          const double dy = (std::max)(0.0, (std::max)(y0 - l[1], l[1] - y0 - m_side));
-          if(dx * dx + dy * dy > reach * reach)
-            continue;
-          const std::uint32_t c = columns.lists().find(Column_index::key(i, j));
-          if(c != Key_map::none)
-            near_column[c] = 1;
-        }
-    }
+    for(const P3& l : locations)
+      columns.lists().for_square_lists(m_lo, m_side, l, reach, [&](long i, long j, std::uint32_t c) {
+        const double x0 = m_lo[0] + double(i) * m_side, y0 = m_lo[1] + double(j) * m_side;
+        const double dx = (std::max)(0.0, (std::max)(x0 - l[0], l[0] - x0 - m_side));
+        const double dy = (std::max)(0.0, (std::max)(y0 - l[1], l[1] - y0 - m_side));
+        if(dx * dx + dy * dy <= reach * reach)
+          near_column[c] = 1;
+      });
     // (By runs of points of one column: consecutive points mostly share it.)
     std::vector<std::uint32_t> near;
     near.reserve(m_p.size());

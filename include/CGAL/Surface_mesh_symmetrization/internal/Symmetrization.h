@@ -51,8 +51,6 @@
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Midpoint_placement.h>
 
 #include <Eigen/IterativeLinearSolvers>
-
-#include <numeric>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
@@ -62,6 +60,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -183,6 +182,14 @@ mirror_points(const Surface& s, const Surface_index& index, const std::vector<Af
   return result;
 }
 
+// The exact mirror points of every vertex of `s` (a closest-point tree built for it).
+inline std::vector<std::vector<Mirror>> exact_mirror_points(const Surface& s, const std::vector<Affine_3d>& inverses,
+                                                            std::size_t threads)
+{
+  const Surface_index index(s);
+  return mirror_points(s, index, inverses, true, threads);
+}
+
 // RMS relative change of the edge lengths between `x0` and `x` (edges of positive length).
 inline double edge_distortion(const Surface& s, const std::vector<Vector_3d>& x0,
                               const std::vector<Vector_3d>& x)
@@ -205,8 +212,7 @@ inline double edge_distortion(const Surface& s, const std::vector<Vector_3d>& x0
 inline std::vector<Vector_3d> naive_symmetrization(const Surface& s, const Affine_3d& t,
                                                    std::size_t threads)
 {
-  const Surface_index index(s);
-  const auto mirrors = mirror_points(s, index, {t.inverse()}, true, threads);
+  const auto mirrors = exact_mirror_points(s, {t.inverse()}, threads);
   std::vector<Vector_3d> x = s.points;
   for(std::size_t i = 0; i < x.size(); ++i) {
     const Mirror& m = mirrors[0][i];
@@ -224,9 +230,7 @@ inline std::vector<Vector_3d> naive_symmetrization(const Surface& s, const Affin
 inline double symmetry_error(const Surface& s, const std::vector<Vector_3d>& x, const Affine_3d& t,
                              std::size_t threads)
 {
-  const Surface moved{x, s.triangles};
-  const Surface_index index(moved);
-  const auto mirrors = mirror_points(moved, index, {t.inverse()}, true, threads);
+  const auto mirrors = exact_mirror_points(Surface{x, s.triangles}, {t.inverse()}, threads);
   return rms_mirror_distance(mirrors, {std::vector<double>()}) / s.diagonal();
 }
 
@@ -344,8 +348,7 @@ public:
     SAI::Parallel_workspaces<char> both(o.number_of_threads);
     both.for_each(0, 2, [&](std::size_t job, char&) {
       if(job == 1) {
-        const Surface_index index(m_input);
-        const auto mirrors = mirror_points(m_input, index, m_inverses, true, o.number_of_threads);
+        const auto mirrors = exact_mirror_points(m_input, m_inverses, o.number_of_threads);
         m_error_before = rms_mirror_distance(mirrors, finest_weights) / m_diagonal;
         return;
       }
@@ -469,9 +472,7 @@ public:
         if(constrained && l > 0) {
           double e = 0;
           if(s > 0) {
-            const Surface current{x, level.original.triangles};
-            const Surface_index index(current);
-            mirrors = mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
+            mirrors = exact_mirrors(level, x);
             e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
             out.iterations.back().symmetry_error = e;
             if(e < best_error) {
@@ -489,14 +490,12 @@ public:
           continue;
         }
         const double alpha = constrained ? 1.0 : alphas[s];
-        const Surface current{x, level.original.triangles};
         bool tracked = false;
         if(escalate && projections > 0 && total_projections % 4 != 0) {
           mirrors = track_mirrors(level, x, mirrors);
           tracked = true;
         } else {
-          const Surface_index index(current);
-          mirrors = mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
+          mirrors = exact_mirrors(level, x);
         }
         if(s > 0) {
           double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
@@ -504,8 +503,7 @@ public:
           // Tracked mirrors leave out the vertices that only an exact search finds one for, which
           // are the farthest: their error is checked once it is well below the target.
           if(tracked && e <= 0.75 * m_o.target_error) {
-            const Surface_index index(current);
-            mirrors = mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
+            mirrors = exact_mirrors(level, x);
             e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
             rechecked = true;
           }
@@ -549,9 +547,7 @@ public:
           m_o.progress((std::min)(0.99, done_work / (std::max)(1.0, total_work)));
       }
       if(last_tracked) { // the last positions, exactly
-        const Surface current{x, level.original.triangles};
-        const Surface_index index(current);
-        mirrors = mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
+        mirrors = exact_mirrors(level, x);
         const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
         out.iterations.back().symmetry_error = e;
         if(e < best_error) {
@@ -569,11 +565,8 @@ public:
     }
     out.points = x;
     {
-      if(out.mirrors.empty()) { // refine() leaves those of the positions it kept
-        const Surface result{x, m_input.triangles};
-        const Surface_index index(result);
-        out.mirrors = mirror_points(result, index, m_inverses, true, m_o.number_of_threads);
-      }
+      if(out.mirrors.empty()) // refine() leaves those of the positions it kept
+        out.mirrors = exact_mirrors(m_levels.front(), x);
       out.error_after = rms_mirror_distance(out.mirrors, m_levels.front().weights) / m_diagonal;
       if(!out.iterations.empty())
         out.iterations.back().symmetry_error = out.error_after;
@@ -782,6 +775,12 @@ private:
     return result;
   }
 
+  // The exact mirror points of the surface of `level` at positions `x`.
+  std::vector<std::vector<Mirror>> exact_mirrors(const Level& level, const std::vector<Vector_3d>& x) const
+  {
+    return exact_mirror_points(Surface{x, level.original.triangles}, m_inverses, m_o.number_of_threads);
+  }
+
   const std::vector<std::array<std::uint32_t, 3>>& face_adjacency(const Level& level) const
   {
     if(level.adjacent.empty())
@@ -804,9 +803,7 @@ private:
     std::vector<Vector_3d> best_x = x;
     double best_error = std::numeric_limits<double>::infinity();
     for(std::size_t step = 0;; ++step) {
-      const Surface current{x, level.original.triangles};
-      const Surface_index index(current);
-      std::vector<std::vector<Mirror>> mirrors = mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
+      std::vector<std::vector<Mirror>> mirrors = exact_mirrors(level, x);
       const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
       if(step > 0)
         out.iterations.back().symmetry_error = e;
@@ -834,12 +831,7 @@ private:
   {
     const std::size_t n = level.original.number_of_vertices();
     const std::uint32_t none = Surface_index::no_face;
-    const auto exact = [&](const std::vector<Vector_3d>& at) {
-      const Surface current{at, level.original.triangles};
-      const Surface_index index(current);
-      return mirror_points(current, index, m_inverses, true, m_o.number_of_threads);
-    };
-    std::vector<std::vector<Mirror>> mirrors = out.mirrors.empty() ? exact(x) : out.mirrors;
+    std::vector<std::vector<Mirror>> mirrors = out.mirrors.empty() ? exact_mirrors(level, x) : out.mirrors;
     double best_error = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
     out.mirrors = mirrors;
     // Vertex neighbours.
@@ -890,7 +882,7 @@ private:
         if(on[i])
           unknown[i] = count++;
       refine_step(level, mirrors, rho, x, &unknown);
-      mirrors = exact(x);
+      mirrors = exact_mirrors(level, x);
       const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
       out.iterations.push_back(Iteration_record{0, 1.0, e});
       const bool gained = e < m_o.stall_ratio * best_error;
