@@ -5,7 +5,7 @@
 // vertex halfway to the image of its mirror point.
 //
 //   bench_symmetrization [--data DIR] [--meshes camel,cow,...] [--repeats 5] [--no-large]
-//                        [--threads 0] [--output FILE]
+//                        [--large-repeats 1] [--threads 0] [--output FILE]
 //
 //   - CGAL's meshes (camel, cow, triceratops, homer, head, man): the best detected plane
 //     (detection timed apart), then symmetrize();
@@ -19,7 +19,10 @@
 // lengths ("distortion") and of the edge vectors ("edge_vector_distortion"). Each mesh is also
 // symmetrized without the isometric refinement ("no_refinement": target_symmetry_error 0), with
 // the default final_symmetry_weight and with 10^4 (less asymmetry, more distortion where the two
-// sides have no matching vertices).
+// sides have no matching vertices). Equal-error comparisons (not on the subdivided man): the naive
+// move repeated until it is as symmetric as our result ("naive_repeated_to_our_error"), and our
+// result stopped at the error of one naive pass ("ours_at_naive_error"). The subdivided man's
+// time is the median of --large-repeats runs (the smallest is "seconds_min").
 // JSON to stdout and to FILE; progress to stderr.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -63,7 +66,7 @@ double median(std::vector<double> s)
 // Symmetrizes a copy of `mesh` `repeats` times about `symmetry`; the figures of the last run and
 // the naive baseline's.
 Json run(const std::string& name, const Mesh& mesh, const Symmetry& symmetry, std::size_t repeats,
-         std::size_t threads)
+         std::size_t threads, bool equal_error = true)
 {
   std::vector<double> seconds;
   SY::Symmetrization_result<Kernel> r;
@@ -100,6 +103,35 @@ Json run(const std::string& name, const Mesh& mesh, const Symmetry& symmetry, st
   b["distortion"] = naive_distortion;
   b["edge_vector_distortion"] = SYI::edge_vector_distortion(surface, surface.points, naive);
   j["naive_halfway"] = b;
+  // Equal-error comparisons: the naive move repeated (each pass from the mirror points of the
+  // last) until it is as symmetric as our result, and our result stopped at the error of one
+  // naive pass.
+  if(equal_error) {
+    SYI::Surface repeated = surface;
+    Json it = Json::object();
+    std::size_t passes = 0;
+    double e = naive_error;
+    repeated.points = naive;
+    for(passes = 1; passes < 100 && e > r.symmetry_error_after; ++passes) {
+      repeated.points = SYI::naive_symmetrization(repeated, t, threads);
+      e = SYI::symmetry_error(surface, repeated.points, t, threads);
+    }
+    it["passes"] = passes;
+    it["symmetry_error_after"] = e;
+    it["distortion"] = SYI::edge_distortion(surface, surface.points, repeated.points);
+    j["naive_repeated_to_our_error"] = it;
+    Mesh stopped = mesh;
+    const auto rs = SY::symmetrize(stopped, std::vector<Symmetry>{symmetry},
+                                   SY::parameters::number_of_threads(threads).target_symmetry_error(naive_error));
+    Json at = Json::object();
+    at["target_symmetry_error"] = naive_error;
+    at["symmetry_error_after"] = rs.symmetry_error_after;
+    at["distortion"] = rs.distortion;
+    j["ours_at_naive_error"] = at;
+    std::cerr << "    equal error: naive repeated " << passes << " times: error " << e << ", distortion "
+              << it["distortion"].dump() << "; ours at the naive error: error " << rs.symmetry_error_after
+              << ", distortion " << rs.distortion << "\n";
+  }
   // Without the isometric refinement (target 0), with the default and with a larger final
   // symmetry weight (10^4: less asymmetry, more distortion).
   for(const double weight : {100.0, 1e4}) {
@@ -142,7 +174,7 @@ int main(int argc, char** argv)
 {
   std::string data = SHAPE_ANALYSIS_DATA_DIR, output;
   std::vector<std::string> names = {"camel", "cow", "triceratops", "homer", "head", "man"};
-  std::size_t repeats = 5, threads = 0;
+  std::size_t repeats = 5, repeats_large = 1, threads = 0;
   bool large = true;
   for(Arguments args(argc, argv); args.next();) {
     const std::string a = args.flag();
@@ -152,6 +184,8 @@ int main(int argc, char** argv)
       names = split(args.value());
     else if(a == "--repeats")
       repeats = std::max<std::size_t>(1, std::stoul(args.value()));
+    else if(a == "--large-repeats")
+      repeats_large = std::max<std::size_t>(1, std::stoul(args.value()));
     else if(a == "--threads")
       threads = std::stoul(args.value());
     else if(a == "--no-large")
@@ -160,7 +194,7 @@ int main(int argc, char** argv)
       output = args.value();
     else {
       std::cerr << "usage: bench_symmetrization [--data DIR] [--meshes a,b] [--repeats N] [--no-large] "
-                   "[--threads N] [--output FILE]\n";
+                   "[--large-repeats N] [--threads N] [--output FILE]\n";
       return 2;
     }
   }
@@ -214,7 +248,7 @@ int main(int argc, char** argv)
     std::cerr << "man.off Loop-subdivided twice (" << num_vertices(m) << " vertices, " << seconds_since(start) << " s):\n";
     double detection = 0;
     const Symmetry s = best_plane(m, threads, detection);
-    Json j = run("man_loop2", m, s, 1, threads);
+    Json j = run("man_loop2", m, s, repeats_large, threads, false);
     j["detection_seconds"] = detection;
     j["thesis_seconds"] = 600.0;
     j["thesis_vertices"] = 240000;

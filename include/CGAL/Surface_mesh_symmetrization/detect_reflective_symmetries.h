@@ -66,8 +66,8 @@ Detects the planar reflective symmetries of a triangle mesh, global and partial,
    of normal direction (about 4 degrees) and offset (2% of the bounding-box diagonal); the
    strongest bins, away from each other, are sharpened by mean shift over the votes around them.
 3. Each candidate is refined to minimize the symmetry distance: every sample is reflected and
-   paired with the closest surface point whose normal agrees with the reflected normal (CGAL's
-   AABB tree); Gauss-Newton steps on the plane's normal and offset minimize the robustly
+   paired with the closest surface point whose normal agrees with the reflected normal (a
+   bounding-volume hierarchy of the faces); Gauss-Newton steps on the plane's normal and offset minimize the robustly
    weighted (Tukey) distances of the reflected samples to the tangent planes of their partners,
    with a reach that shrinks from 15% to 2% of the diagonal. All candidates are first refined on
    300 samples; the best distinct ones continue on every sample.

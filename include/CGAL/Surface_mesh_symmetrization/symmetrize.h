@@ -141,8 +141,8 @@ symmetric under the given symmetries while its shape changes as little as possib
 
 Each vertex \f$y_i\f$ of the current surface gets a mirror point \f$p_i\f$ for each symmetry
 \f$T\f$: the closest point of the surface to \f$T^{-1}(y_i)\f$ whose face normal agrees with the
-transformed vertex normal (points whose normal points the other way are rejected; \cgal's AABB
-tree). A sparse linear least-squares problem then gives the new positions:
+transformed vertex normal (points whose normal points the other way are rejected; a
+bounding-volume hierarchy of the faces, refitted as the vertices move). A sparse linear least-squares problem then gives the new positions:
 \f[ E = \alpha E_{sym} + (1 - \alpha)(E_{shape} + \beta E_{disp}), \f]
 where \f$E_{sym} = \frac{1}{n}\sum_T\sum_i w_{i,T}\,|x_i - q_i|^2\f$ draws each vertex towards
 \f$q_i = (y_i + T(p_i))/2\f$, the midpoint of itself and the image of its mirror point (\f$w\f$:
@@ -177,23 +177,28 @@ mesh do not have matching vertices, a curved surface cannot reach it without fla
 its vertices: the constrained steps stop near the sagitta of the triangles. While the error is
 still above `target_symmetry_error`, an isometric refinement follows on meshes of at most 50,000
 vertices (finer meshes have smaller sagittas): each step moves the vertices (all three coordinates) to minimize the linearized
-\f[ \frac{\rho}{n D^2}\sum_{T,i} w_{i,T}\,|r_i + L\,d_i - \textstyle\sum_c b_c d_c|^2
+\f[ \frac{\rho}{n D^2}\sum_{T,i} w_{i,T}\,\|r_i + L\,d_i - \textstyle\sum_c b_c d_c\|_{M_i}^2
     + \frac{1}{|E|}\sum_{(i,j)} \Big(\frac{l_{ij} - l^0_{ij} + u_{ij}\cdot(d_i - d_j)}{l^0_{ij}}\Big)^2
       + \eta\,\frac{|d_i - d_j|^2}{(l^0_{ij})^2}
     + \frac{\mu}{n h^2}\sum_i |d_i|^2, \f]
 where \f$d\f$ are the displacements, \f$r_i = T^{-1}(y_i) - p_i\f$ the mirror residual of vertex
 \f$i\f$, \f$L\f$ the linear part of \f$T^{-1}\f$, \f$b_c, d_c\f$ the barycentric coordinates and
 displacements of the corners of the mirror face, \f$l, l^0, u\f$ the current and input lengths of
-an edge and its direction, \f$\eta = 0.01\f$, \f$\mu = 10^{-4}\f$: the symmetry error against the
-relative change of the edge lengths, the distortion itself. Bending and rigid motions of parts
+an edge and its direction, \f$\eta = 0.01\f$, \f$\mu = 10^{-4}\f$, and
+\f$\|v\|_{M_i}^2 = (n\cdot v)^2 + \tau_i\,|v - (n\cdot v)\,n|^2\f$ with \f$n\f$ the normal of the
+mirror face and \f$\tau_i = \min(1, \max(0.1, |r_i|/h))\f$ (near the surface mostly the distance to
+its tangent plane, so that mirror points can slide; from one mean edge length on, the distance to
+the point): the symmetry error against the relative change of the edge lengths, the distortion
+itself. Bending and rigid motions of parts
 leave edge lengths unchanged, so the two sides are fitted to each other where bending costs least.
 \f$\rho\f$ starts at \f$10^3\f$ and grows by \f$\sqrt{10}\f$ per step (at most 14 steps,
 \f$\rho \le 10^6\f$); the refinement stops at the target, and the positions of the smallest
 error are kept: a smaller target gives a more symmetric and more distorted result (see the user
 manual, \ref SMSYSymmetrizationLimits). Larger meshes, while their error is above the target,
 take further constrained steps instead (at most 40): their weight starts at \f$10^4\f$ and grows
-tenfold, up to \f$10^5\f$, whenever a step gains less than 10%; between exact closest-point
-searches (every fourth step) the mirror points are followed across adjacent faces. Then up to 4
+tenfold, up to \f$10^5\f$, whenever a step gains less than 10% (an exact closest-point search is
+compared with the previous exact one); between exact searches (every fourth step) the mirror
+points are followed across adjacent faces. Then up to 4
 steps of the refinement, at its largest weight, move only the vertices whose mirror distance is
 above twice the target, the corners of their mirror faces and one ring around them. The result does not
 depend on the number of threads.
@@ -419,7 +424,7 @@ symmetrize(TriangleMesh& tm, const SymmetryRange& symmetries,
 
 Computes the symmetric map of a mesh for one symmetry without moving it: for every vertex
 \f$x_i\f$, the closest point of the surface to \f$T^{-1}(x_i)\f$ whose face normal agrees with the
-transformed vertex normal (CGAL's AABB tree). On a symmetric mesh (after `symmetrize()`), the
+transformed vertex normal (a bounding-volume hierarchy of the faces). On a symmetric mesh (after `symmetrize()`), the
 mirror points are exact; on a nearly symmetric one they are the natural correspondences of
 `transfer_vertex_attribute()`.
 

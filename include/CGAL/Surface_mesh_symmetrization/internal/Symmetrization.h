@@ -60,6 +60,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <vector>
 
@@ -97,6 +98,7 @@ struct Symmetrization_options
   std::size_t coarsest_extra_steps = 6;   // most further steps at the last weight of the schedule on the coarsest of several levels
   std::size_t local_refinement_steps = 4; // most steps of the local refinement of larger meshes
   std::size_t local_refinement_rings = 1; // neighbour rings around its vertices
+  double tangential_weight = 0.1;         // the smallest weight of the tangential part of the mirror residuals in the refinement
   std::function<void(double)> progress;
 };
 
@@ -147,26 +149,31 @@ inline double rms_mirror_distance(const std::vector<std::vector<Mirror>>& mirror
 }
 
 // Mirror points of every vertex of `s` for every symmetry; `exact`: closest points through the
-// AABB tree (otherwise the faster local search, exact on smooth regions).
+// closest-point hierarchy (otherwise the faster local search, exact on smooth regions). `hints`:
+// mirror points of nearby positions (the previous step's), which speed the exact search up.
 inline std::vector<std::vector<Mirror>>
 mirror_points(const Surface& s, const Surface_index& index, const std::vector<Affine_3d>& inverses,
-              bool exact, std::size_t threads)
+              bool exact, std::size_t threads, const std::vector<std::vector<Mirror>>* hints = nullptr)
 {
   const std::size_t n = s.number_of_vertices();
   const std::vector<Vector_3d> normals = s.vertex_normals();
   std::vector<std::vector<Mirror>> result(inverses.size(), std::vector<Mirror>(n));
   SAI::Parallel_workspaces<std::vector<std::pair<double, std::uint32_t>>> parallel(threads);
   const std::size_t block = 512;
+  // Nearby vertices one after the other when `s` is the surface of the index.
+  const bool ordered = index.vertex_order().size() == n;
   for(std::size_t k = 0; k < inverses.size(); ++k) {
     const Affine_3d& inv = inverses[k];
     const Matrix_3d nm = inv.normal_matrix();
     parallel.for_each(0, (n + block - 1) / block, [&](std::size_t b, std::vector<std::pair<double, std::uint32_t>>& buffer) {
-      for(std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i) {
+      for(std::size_t o = b * block; o < (std::min)(n, (b + 1) * block); ++o) {
+        const std::size_t i = ordered ? index.vertex_order()[o] : o;
         if(!(normals[i].squared_length() > 0))
           continue; // no face: no mirror point
         const Vector_3d q = inv(s.points[i]);
         const Vector_3d m = inv.transform_normal(normals[i], nm);
-        const Surface_point c = exact ? index.closest_compatible(q, m, 0.0)
+        const std::uint32_t hint = hints != nullptr && (*hints)[k][i].found ? (*hints)[k][i].face : Surface_index::no_face;
+        const Surface_point c = exact ? index.closest_compatible(q, m, 0.0, hint)
                                       : index.approximate_closest_compatible(q, m, 0.0,
                                                                              std::numeric_limits<double>::infinity(), buffer);
         Mirror& r = result[k][i];
@@ -184,10 +191,11 @@ mirror_points(const Surface& s, const Surface_index& index, const std::vector<Af
 
 // The exact mirror points of every vertex of `s` (a closest-point tree built for it).
 inline std::vector<std::vector<Mirror>> exact_mirror_points(const Surface& s, const std::vector<Affine_3d>& inverses,
-                                                            std::size_t threads)
+                                                            std::size_t threads,
+                                                            const std::vector<std::vector<Mirror>>* hints = nullptr)
 {
   const Surface_index index(s);
-  return mirror_points(s, index, inverses, true, threads);
+  return mirror_points(s, index, inverses, true, threads, hints);
 }
 
 // RMS relative change of the edge lengths between `x0` and `x` (edges of positive length).
@@ -267,6 +275,8 @@ struct Level
   // Per face, the faces across its three edges (no_face at a border or a non-manifold edge);
   // built on first use.
   mutable std::vector<std::array<std::uint32_t, 3>> adjacent;
+  // The closest-point index of the current positions of this level, refitted as they move.
+  mutable std::unique_ptr<Surface_index> index;
 };
 
 // Decimates `s` with CGAL's edge collapse (edge-length cost, midpoint placement) to about
@@ -326,6 +336,7 @@ class Symmetrizer
 {
 public:
   typedef Eigen::SparseMatrix<double> Sparse;
+  typedef Eigen::SimplicialLDLT<Sparse> LDLT;
   typedef Eigen::Triplet<double> Triplet;
 
   Symmetrizer(const Surface& input, const std::vector<Solver_symmetry>& symmetries,
@@ -346,10 +357,14 @@ public:
     // The error of the input (an exact search, in parallel) while the levels are made (serial).
     const std::vector<std::vector<double>> finest_weights = m_levels.front().weights;
     SAI::Parallel_workspaces<char> both(o.number_of_threads);
+    std::unique_ptr<Surface_index> input_index;
     both.for_each(0, 2, [&](std::size_t job, char&) {
       if(job == 1) {
-        const auto mirrors = exact_mirror_points(m_input, m_inverses, o.number_of_threads);
-        m_error_before = rms_mirror_distance(mirrors, finest_weights) / m_diagonal;
+        // The index of the input becomes that of the finest level, refitted as it moves, and the
+        // mirror points of the input are the hints of its first search.
+        input_index = std::make_unique<Surface_index>(m_input);
+        m_input_mirrors = mirror_points(m_input, *input_index, m_inverses, true, o.number_of_threads);
+        m_error_before = rms_mirror_distance(m_input_mirrors, finest_weights) / m_diagonal;
         return;
       }
       const std::size_t max_levels = o.number_of_levels == 0 ? 8 : o.number_of_levels;
@@ -375,6 +390,7 @@ public:
         m_levels.push_back(std::move(coarse));
       }
     });
+    m_levels.front().index = std::move(input_index);
     // Links between levels and the weights of coarser levels (the weight of the closest point).
     for(std::size_t l = 1; l < m_levels.size(); ++l) {
       const Surface& fine = m_levels[l - 1].original;
@@ -385,16 +401,18 @@ public:
       parallel.for_each(0, fine.number_of_vertices(), [&](std::size_t i, char&) {
         coarse.finer_on_this[i] = coarse_index.closest(fine.points[i]);
       });
-      const Surface_index fine_index(fine);
+      std::unique_ptr<Surface_index> fine_index; // made when a symmetry has weights
       coarse.weights.resize(symmetries.size());
       for(std::size_t k = 0; k < symmetries.size(); ++k) {
         const std::vector<double>& wf = m_levels[l - 1].weights[k];
         if(wf.empty())
           continue;
+        if(!fine_index)
+          fine_index = std::make_unique<Surface_index>(fine);
         std::vector<double>& wc = coarse.weights[k];
         wc.assign(coarse.original.number_of_vertices(), 0.0);
         for(std::size_t i = 0; i < wc.size(); ++i) {
-          const Surface_point c = fine_index.closest(coarse.original.points[i]);
+          const Surface_point c = fine_index->closest(coarse.original.points[i]);
           if(!c.found)
             continue;
           const auto& t = fine.triangles[c.face];
@@ -454,6 +472,8 @@ public:
       double best_error = std::numeric_limits<double>::infinity();
       bool last_tracked = false; // the error of the current positions is that of tracked mirrors
       double previous_constrained = std::numeric_limits<double>::infinity();
+      double previous_exact = std::numeric_limits<double>::infinity(); // the error of the last exact search
+      bool previous_tracked = false;
       double previous_error = std::numeric_limits<double>::infinity();
       // Finest level of a mesh too large for the refinement: growing constrained weights.
       const bool escalate = l == 0 && !refinable(level) && m_o.target_error > 0 &&
@@ -461,7 +481,10 @@ public:
       // It starts from the schedule's last weight: a smaller one would undo the last steps.
       m_constrained_ratio = escalate ? (std::max)(m_o.constrained_ratio, std::pow(10.0, m_o.schedule_exponent))
                                      : m_o.constrained_ratio;
+      // On the finest level, the input's mirror points are the first hints.
       std::vector<std::vector<Mirror>> mirrors;
+      if(l == 0)
+        mirrors.swap(m_input_mirrors);
       for(std::size_t s = 0;; ++s) {
         const bool constrained = s + 1 >= alphas.size();
         const bool coarsest = l > 0 && l + 1 == L;
@@ -472,7 +495,7 @@ public:
         if(constrained && l > 0) {
           double e = 0;
           if(s > 0) {
-            mirrors = exact_mirrors(level, x);
+            mirrors = exact_mirrors(level, x, &mirrors);
             e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
             out.iterations.back().symmetry_error = e;
             if(e < best_error) {
@@ -495,7 +518,9 @@ public:
           mirrors = track_mirrors(level, x, mirrors);
           tracked = true;
         } else {
-          mirrors = exact_mirrors(level, x);
+          // The input's own (the finest level not seeded: its positions are the input's).
+          if(!(s == 0 && step == 0 && l == 0 && mirrors.size() == m_inverses.size()))
+            mirrors = exact_mirrors(level, x, &mirrors);
         }
         if(s > 0) {
           double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
@@ -503,7 +528,7 @@ public:
           // Tracked mirrors leave out the vertices that only an exact search finds one for, which
           // are the farthest: their error is checked once it is well below the target.
           if(tracked && e <= 0.75 * m_o.target_error) {
-            mirrors = exact_mirrors(level, x);
+            mirrors = exact_mirrors(level, x, &mirrors);
             e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
             rechecked = true;
           }
@@ -519,9 +544,13 @@ public:
             // The first constrained step may pair vertices and raise the error for a step; after
             // it, stop once a step gains less than 5%. Large meshes above the target: the weight
             // grows tenfold once a step gains less than 10%.
-            // An exact search after tracked ones is not compared with them: they leave out the
-            // vertices that only it finds a mirror point for.
-            const double reference = rechecked ? std::numeric_limits<double>::infinity() : previous_constrained;
+            // An exact search after tracked ones is not compared with them (they leave out the
+            // vertices that only it finds a mirror point for), but with the last exact one.
+            const double reference = rechecked ? std::numeric_limits<double>::infinity()
+                                   : (!tracked && previous_tracked) ? previous_exact : previous_constrained;
+            previous_tracked = tracked;
+            if(!tracked)
+              previous_exact = e;
             const bool stalled = projections >= 2 && e > m_o.stall_ratio * reference;
             const bool slow = projections >= 2 && e > 0.9 * reference;
             previous_constrained = e;
@@ -531,6 +560,7 @@ public:
               m_constrained_ratio = (std::min)(m_o.maximum_constrained_ratio, m_constrained_ratio * 10);
               projections = 1;
               previous_constrained = std::numeric_limits<double>::infinity();
+              previous_exact = std::numeric_limits<double>::infinity();
             } else if(e <= m_o.symmetry_tolerance || projections >= m_o.projection_iterations || stalled ||
                       (escalate && (e <= m_o.target_error || total_projections >= m_o.maximum_constrained_steps)))
               break;
@@ -547,7 +577,7 @@ public:
           m_o.progress((std::min)(0.99, done_work / (std::max)(1.0, total_work)));
       }
       if(last_tracked) { // the last positions, exactly
-        mirrors = exact_mirrors(level, x);
+        mirrors = exact_mirrors(level, x, &mirrors);
         const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
         out.iterations.back().symmetry_error = e;
         if(e < best_error) {
@@ -655,30 +685,34 @@ private:
         wq[i] += q * wi;
       }
     }
-    std::vector<Triplet> tr;
-    tr.reserve(4 * level.edges.size() + n);
     std::vector<Vector_3d> b(n);
     for(const auto& e : level.edges) {
-      tr.emplace_back(Eigen::Index(e.first), Eigen::Index(e.first), a_edge);
-      tr.emplace_back(Eigen::Index(e.second), Eigen::Index(e.second), a_edge);
-      tr.emplace_back(Eigen::Index(e.first), Eigen::Index(e.second), -a_edge);
-      tr.emplace_back(Eigen::Index(e.second), Eigen::Index(e.first), -a_edge);
       const std::vector<Vector_3d>& ref = anchor_current ? y : x0;
       const Vector_3d d = ref[e.first] - ref[e.second];
       b[e.first] += d * a_edge;
       b[e.second] -= d * a_edge;
     }
-    for(std::size_t i = 0; i < n; ++i) {
-      tr.emplace_back(Eigen::Index(i), Eigen::Index(i), w[i] + a_disp);
+    for(std::size_t i = 0; i < n; ++i)
       b[i] += wq[i] + x0[i] * a_disp;
-    }
     // The matrix only depends on the level, alpha and the weights: its factorization is kept
     // for the next solve with the same ones (the constrained steps).
     // Its pattern (edges and diagonal) only depends on the level: the ordering and symbolic
     // analysis are made once per level.
     Factorization& F = m_factorization;
     if(!(F.level == &level && F.ratio == rho && F.weights == w)) {
-      Sparse A(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+      std::vector<Triplet> tr;
+      tr.reserve(4 * level.edges.size() + n);
+      for(const auto& e : level.edges) {
+        tr.emplace_back(Eigen::Index(e.first), Eigen::Index(e.first), a_edge);
+        tr.emplace_back(Eigen::Index(e.second), Eigen::Index(e.second), a_edge);
+        tr.emplace_back(Eigen::Index(e.first), Eigen::Index(e.second), -a_edge);
+        tr.emplace_back(Eigen::Index(e.second), Eigen::Index(e.first), -a_edge);
+      }
+      for(std::size_t i = 0; i < n; ++i)
+        tr.emplace_back(Eigen::Index(i), Eigen::Index(i), w[i] + a_disp);
+      // Kept with the factorization: the iterative solver refers to it.
+      Sparse& A = F.matrix;
+      A.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
       A.setFromTriplets(tr.begin(), tr.end());
       const bool analyzed = F.analyzed == &level;
       F.level = &level;
@@ -776,9 +810,16 @@ private:
   }
 
   // The exact mirror points of the surface of `level` at positions `x`.
-  std::vector<std::vector<Mirror>> exact_mirrors(const Level& level, const std::vector<Vector_3d>& x) const
+  std::vector<std::vector<Mirror>> exact_mirrors(const Level& level, const std::vector<Vector_3d>& x,
+                                                 const std::vector<std::vector<Mirror>>* hints = nullptr) const
   {
-    return exact_mirror_points(Surface{x, level.original.triangles}, m_inverses, m_o.number_of_threads);
+    if(!level.index)
+      level.index = std::make_unique<Surface_index>(Surface{x, level.original.triangles});
+    else
+      level.index->update(x);
+    return mirror_points(level.index->surface(), *level.index, m_inverses, true, m_o.number_of_threads,
+                         hints != nullptr && hints->size() == m_inverses.size() &&
+                             hints->front().size() == x.size() ? hints : nullptr);
   }
 
   const std::vector<std::array<std::uint32_t, 3>>& face_adjacency(const Level& level) const
@@ -802,8 +843,9 @@ private:
     double rho = m_o.refinement_ratio;
     std::vector<Vector_3d> best_x = x;
     double best_error = std::numeric_limits<double>::infinity();
+    std::vector<std::vector<Mirror>> mirrors;
     for(std::size_t step = 0;; ++step) {
-      std::vector<std::vector<Mirror>> mirrors = exact_mirrors(level, x);
+      mirrors = exact_mirrors(level, x, &mirrors);
       const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
       if(step > 0)
         out.iterations.back().symmetry_error = e;
@@ -882,7 +924,7 @@ private:
         if(on[i])
           unknown[i] = count++;
       refine_step(level, mirrors, rho, x, &unknown);
-      mirrors = exact_mirrors(level, x);
+      mirrors = exact_mirrors(level, x, &mirrors);
       const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
       out.iterations.push_back(Iteration_record{0, 1.0, e});
       const bool gained = e < m_o.stall_ratio * best_error;
@@ -899,12 +941,15 @@ private:
 
   // One step of the isometric refinement: the displacements d_i of the vertices minimize the
   // linearized
-  //   rho / (n D^2) sum_ik w_ik |r_ik + L_k d_i - sum_c b_c d_c|^2
+  //   rho / (n D^2) sum_ik w_ik |r_ik + L_k d_i - sum_c b_c d_c|_M^2
   //   + 1/|E| sum_e [((l_e - l0_e + u_e . (d_i - d_j)) / l0_e)^2 + eta |d_i - d_j|^2 / l0_e^2]
   //   + mu / (n h^2) sum_i |d_i|^2,
   // r_ik = T_k^-1(y_i) - p_ik being the mirror residual of vertex i (p_ik its mirror point, on the
   // face of corners c with barycentric coordinates b_c), L_k the linear part of T_k^-1, l_e and
-  // l0_e the current and input lengths of edge e and u_e its direction: the symmetry error against
+  // l0_e the current and input lengths of edge e and u_e its direction, |v|_M^2 = (n.v)^2 +
+  // tau |v - (n.v) n|^2 with n the normal of the mirror face and tau = min(1, max(0.1, |r_ik| / h))
+  // (near the surface, mostly the distance to its tangent plane, so that mirror points slide;
+  // point to point at an edge's length and beyond): the symmetry error against
   // the relative change of the edge lengths (the distortion). Bending and rigid motions of parts
   // leave the edge lengths unchanged: the two sides meet where their triangulations do not match
   // at the least cost in distortion, which the constrained steps (edge vectors kept) cannot do.
@@ -934,7 +979,10 @@ private:
     const double eta = 0.01, mu = 1e-4;
     const double a_disp = mu / (double(n) * h * h);
     std::vector<Triplet> tr;
-    tr.reserve(16 * 9 * m_unknowns * mirrors.size() + 36 * level.edges.size() + 3 * m_unknowns);
+    std::size_t active_edges = 0;
+    for(const auto& e : level.edges)
+      active_edges += unknown[e.first] != none || unknown[e.second] != none ? 1 : 0;
+    tr.reserve(16 * 9 * m_unknowns * mirrors.size() + 36 * active_edges + 3 * m_unknowns);
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(3 * m_unknowns));
     const auto block = [&](std::size_t u, std::size_t v, const Matrix_3d& m, double c) {
       const std::uint32_t iu = unknown[u], iv = unknown[v];
@@ -950,17 +998,10 @@ private:
       if(unknown[u] != none)
         rhs(Eigen::Index(3 * std::size_t(unknown[u]) + std::size_t(a))) += value;
     };
+    const std::vector<Vector_3d> fnormals = Surface{x, level.original.triangles}.face_normals();
     for(std::size_t k = 0; k < mirrors.size(); ++k) {
       const Affine_3d& inv = m_inverses[k];
-      Matrix_3d L = inv.linear, Lt, LtL, I = SAI::identity_matrix();
-      for(int a = 0; a < 3; ++a)
-        for(int b = 0; b < 3; ++b) {
-          Lt[std::size_t(a)][b] = L[std::size_t(b)][a];
-          double t = 0;
-          for(int c = 0; c < 3; ++c)
-            t += L[std::size_t(c)][a] * L[std::size_t(c)][b];
-          LtL[std::size_t(a)][b] = t;
-        }
+      const Matrix_3d L = inv.linear, Lt = SAI::transpose(L);
       for(std::size_t i = 0; i < n; ++i) {
         const Mirror& m = mirrors[k][i];
         const double c = a_err * weight(level, k, i);
@@ -971,18 +1012,29 @@ private:
           continue;
         const Vector_3d p = x[f[0]] * m.barycentric[0] + x[f[1]] * m.barycentric[1] + x[f[2]] * m.barycentric[2];
         const Vector_3d r = inv(x[i]) - p;
-        block(i, i, LtL, c);
-        const Vector_3d Ltr = SAI::multiply(Lt, r);
+        // The metric of the residual: its part along the normal of the mirror face, and tau of
+        // its tangential part. A small residual is a distance to the tangent plane (the mirror
+        // point may slide along the surface); one of an edge's length or more is a distance to
+        // the point, whose tangent plane says little so far away.
+        const Vector_3d& nf = fnormals[m.face];
+        const double tau = (std::min)(1.0, (std::max)(m_o.tangential_weight, r.length() / h));
+        Matrix_3d M;
         for(int a = 0; a < 3; ++a)
-          add_rhs(i, a, -c * Ltr[a]);
+          for(int b = 0; b < 3; ++b)
+            M[std::size_t(a)][b] = (1 - tau) * nf[a] * nf[b] + (a == b ? tau : 0.0);
+        const Matrix_3d LtM = SAI::multiply(Lt, M), ML = SAI::multiply(M, L), LtML = SAI::multiply(LtM, L);
+        block(i, i, LtML, c);
+        const Vector_3d Mr = SAI::multiply(M, r), LtMr = SAI::multiply(Lt, Mr);
+        for(int a = 0; a < 3; ++a)
+          add_rhs(i, a, -c * LtMr[a]);
         for(int u = 0; u < 3; ++u) {
           const double bu = m.barycentric[std::size_t(u)];
-          block(i, f[std::size_t(u)], Lt, -c * bu);
-          block(f[std::size_t(u)], i, L, -c * bu);
+          block(i, f[std::size_t(u)], LtM, -c * bu);
+          block(f[std::size_t(u)], i, ML, -c * bu);
           for(int a = 0; a < 3; ++a)
-            add_rhs(f[std::size_t(u)], a, c * bu * r[a]);
+            add_rhs(f[std::size_t(u)], a, c * bu * Mr[a]);
           for(int v = 0; v < 3; ++v)
-            block(f[std::size_t(u)], f[std::size_t(v)], I, c * bu * m.barycentric[std::size_t(v)]);
+            block(f[std::size_t(u)], f[std::size_t(v)], M, c * bu * m.barycentric[std::size_t(v)]);
         }
       }
     }
@@ -1013,7 +1065,7 @@ private:
       tr.emplace_back(Eigen::Index(i), Eigen::Index(i), a_disp);
     Sparse A(static_cast<Eigen::Index>(3 * m_unknowns), static_cast<Eigen::Index>(3 * m_unknowns));
     A.setFromTriplets(tr.begin(), tr.end());
-    Eigen::SimplicialLDLT<Sparse> ldlt(A);
+    LDLT ldlt(A);
     if(ldlt.info() != Eigen::Success)
       return;
     const Eigen::VectorXd delta = ldlt.solve(rhs);
@@ -1036,12 +1088,14 @@ private:
     double ratio = -1;
     std::vector<double> weights;
     bool direct = true;
-    Eigen::SimplicialLDLT<Sparse> ldlt;
+    Sparse matrix;
+    LDLT ldlt;
     Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> cg;
   };
   mutable Factorization m_factorization;
   double m_constrained_ratio = 100; // alpha / (1 - alpha) of the current constrained steps
   double m_error_before = 0;        // RMS mirror distance of the input, relative to the diagonal
+  std::vector<std::vector<Mirror>> m_input_mirrors; // the mirror points of the input
 
   double weight(const Level& level, std::size_t k, std::size_t i) const
   {

@@ -9,12 +9,14 @@
 //   - affine maps x -> L x + t and planes n.x = d, with the reflection of a plane;
 //   - a triangle surface as arrays (points, triangles) read from any FaceListGraph, with face and
 //     vertex normals;
-//   - closest points on the surface (CGAL's AABB tree) with their face and barycentric
-//     coordinates, and the closest point whose face normal agrees with a given normal;
+//   - closest points on the surface (a bounding-volume hierarchy of the triangles, refitted when
+//     the surface moves) with their face and barycentric coordinates, and the closest point whose
+//     face normal agrees with a given normal;
 //   - area-weighted random samples of the surface with their normals;
 //   - the symmetry distance of an affine map: how far the transformed surface lies from itself.
 
 #include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/internal/Bvh.h>
 #include <CGAL/Shape_analysis/internal/Dual_graph.h>
 #include <CGAL/Shape_analysis/internal/Parallel.h>
 #include <CGAL/Shape_analysis/internal/Point_tree.h>
@@ -22,9 +24,6 @@
 #include <CGAL/Shape_analysis/internal/Similarity_alignment.h>
 #include <CGAL/Shape_analysis/internal/Vector_3d.h>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -32,6 +31,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -577,73 +577,42 @@ std::vector<std::array<std::uint32_t, 3>> face_adjacency(const std::vector<std::
   return adjacent;
 }
 
-// Closest-point queries on a fixed surface (the positions are copied). Faces of zero area are
-// left out of the queries. Queries are thread-safe.
+// Closest-point queries on a surface (the positions are copied; `update()` moves them). Faces of
+// zero area are left out of the queries. Queries are thread-safe. The faces are held in a
+// bounding-volume hierarchy that is refitted, not rebuilt, when the surface moves: CGAL's AABB
+// tree cannot refit, and rebuilding it for every search of the symmetrization took as long as
+// the search.
 class Surface_index
 {
 public:
-  typedef CGAL::Simple_cartesian<double> K;
-  typedef K::Triangle_3 Triangle;
-  typedef std::vector<Triangle>::const_iterator Iterator;
-  typedef CGAL::AABB_triangle_primitive<K, Iterator> Primitive;
-  typedef CGAL::AABB_traits<K, Primitive> Traits;
-  typedef CGAL::AABB_tree<Traits> Tree;
-
-  explicit Surface_index(const Surface& s) : m_surface(s), m_normals(s.face_normals())
-  {
-    m_triangles.reserve(s.triangles.size());
-    m_face_of.reserve(s.triangles.size());
-    m_kept_of_face.assign(s.triangles.size(), no_face);
-    // Faces are represented in the point tree by their centroids, and faces much longer than
-    // usual by a grid of points, so that every point of a face lies within `m_cover` of one of
-    // its points (m_cover: twice the median longest edge).
-    std::vector<double> longest;
-    for(std::size_t f = 0; f < s.triangles.size(); ++f) {
-      if(!(m_normals[f].squared_length() > 0))
-        continue;
-      const auto c = s.corners(f);
-      longest.push_back((std::max)((c[1] - c[0]).length(),
-                                   (std::max)((c[2] - c[1]).length(), (c[0] - c[2]).length())));
-    }
-    if(longest.empty())
-      return;
-    {
-      std::vector<double> sorted = longest;
-      std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
-      m_cover = 2 * sorted[sorted.size() / 2];
-    }
-    std::vector<Vector_3d> points;
-    std::vector<std::uint32_t> ids;
-    std::size_t kept = 0;
-    for(std::size_t f = 0; f < s.triangles.size(); ++f) {
-      if(!(m_normals[f].squared_length() > 0))
-        continue;
-      const auto c = s.corners(f);
-      m_kept_of_face[f] = std::uint32_t(m_triangles.size());
-      m_triangles.emplace_back(point(c[0]), point(c[1]), point(c[2]));
-      m_face_of.push_back(std::uint32_t(f));
-      const double l = longest[kept++];
-      if(!(l > m_cover)) {
-        points.push_back((c[0] + c[1] + c[2]) / 3.0);
-        ids.push_back(std::uint32_t(f));
-        continue;
-      }
-      const std::size_t n = std::size_t(std::ceil(l / m_cover)); // grid spacing <= m_cover
-      for(std::size_t i = 0; i <= n; ++i)
-        for(std::size_t j = 0; i + j <= n; ++j) {
-          const double u = double(i) / double(n), v = double(j) / double(n);
-          points.push_back(c[0] * (1 - u - v) + c[1] * u + c[2] * v);
-          ids.push_back(std::uint32_t(f));
-        }
-    }
-    m_tree.rebuild(m_triangles.begin(), m_triangles.end());
-    m_tree.accelerate_distance_queries();
-    m_points = SAI::Point_tree(points, ids);
-  }
+  explicit Surface_index(const Surface& s) : m_surface(s) { build(); }
   Surface_index(const Surface_index&) = delete;
   Surface_index& operator=(const Surface_index&) = delete;
 
-  bool empty() const { return m_triangles.empty(); }
+  // The same connectivity at positions `points` (one per point of the surface): the boxes of the
+  // hierarchies are refitted to them when the same faces have an area and every face still lies
+  // within the cover radius of its points; otherwise the index is made anew.
+  void update(const std::vector<Vector_3d>& points)
+  {
+    m_surface.points = points;
+    m_normals = m_surface.face_normals();
+    m_local_once = std::make_unique<std::once_flag>();
+    m_samples_ready.store(false);
+    m_grid = Distance_grid();
+    for(std::size_t f = 0; f < m_surface.triangles.size(); ++f)
+      if((m_normals[f].squared_length() > 0) != (m_kept_of_face[f] != no_face)) {
+        build(); // other faces have an area
+        return;
+      }
+    m_triangles.refit([&](std::uint32_t k) { return triangle_box(m_face_of[k]); });
+    leaf_corners();
+    place_samples();
+  }
+
+  bool empty() const { return m_face_of.empty(); }
+  // The vertices of the surface, nearby ones mostly next to each other (the order of the leaves
+  // of the hierarchy of the faces): queries made in this order read the memory in order.
+  const std::vector<std::uint32_t>& vertex_order() const { return m_vertex_order; }
   const Surface& surface() const { return m_surface; }
   const std::vector<Vector_3d>& face_normals() const { return m_normals; }
 
@@ -656,18 +625,26 @@ public:
     Surface_point r;
     if(empty())
       return r;
-    const std::uint32_t k = hint < m_kept_of_face.size() ? m_kept_of_face[hint] : no_face;
-    Tree::Point_and_primitive_id c;
-    if(k != no_face) {
-      const Iterator it = m_triangles.begin() + std::ptrdiff_t(k);
-      const Triangle& t = *it;
-      const K::Point_3 centroid = CGAL::centroid(t[0], t[1], t[2]);
-      c = m_tree.closest_point_and_primitive(point(q), Tree::Point_and_primitive_id(centroid, it));
-    } else {
-      c = m_tree.closest_point_and_primitive(point(q));
+    if(!(hint < m_kept_of_face.size() && m_kept_of_face[hint] != no_face)) {
+      double d2 = 0;
+      nearest_sample(q, std::numeric_limits<double>::infinity(), hint, d2);
     }
-    r.face = m_face_of[std::size_t(c.second - m_triangles.begin())];
-    return exact_on_face(q, r.face);
+    r = exact_on_face(q, hint);
+    std::array<double, 3> bary;
+    m_triangles.nearest(q, r.squared_distance, [&](std::uint32_t j, double& best) {
+      const std::array<Vector_3d, 3>& c = m_leaf_corners[j];
+      const Vector_3d p = closest_point_on_triangle(q, c[0], c[1], c[2], bary);
+      const double d = (p - q).squared_length();
+      // Ties go to the smallest face: the answer does not depend on the hint or the hierarchy.
+      if(d < best || (d == best && m_leaf_face[j] < r.face)) {
+        best = d;
+        r.face = m_leaf_face[j];
+        r.point = p;
+        r.barycentric = bary;
+        r.squared_distance = d;
+      }
+    });
+    return r;
   }
 
   // The closest point of the surface to q among the faces whose unit normal n_f satisfies
@@ -692,8 +669,26 @@ public:
   {
     std::call_once(*m_local_once, [this]() {
       m_grid = Distance_grid(m_surface);
+      // The faces' points in a point tree (made here, for the many queries of a local search;
+      // numbered in the order of the faces, then of their points, so that its answers, ties
+      // included, are those of the hierarchy).
+      std::vector<Vector_3d> points;
+      std::vector<std::uint32_t> ids;
+      m_sample_face.clear();
+      std::vector<std::uint32_t> grid(m_surface.triangles.size(), 0);
+      for(std::size_t j = 0; j < m_leaf_face.size(); ++j)
+        grid[m_leaf_face[j]] = m_leaf_grid[j];
+      for(std::uint32_t f : m_face_of)
+        samples_of(m_surface.corners(f), grid[f], [&](const Vector_3d& p, std::uint32_t) {
+          ids.push_back(std::uint32_t(points.size()));
+          points.push_back(p);
+          m_sample_face.push_back(f);
+        });
+      m_sample_tree = SAI::Point_tree(points, ids);
+      m_samples_ready.store(true, std::memory_order_release);
       // Faces across each edge (edges of exactly two faces of positive area).
-      m_adjacent = face_adjacency(m_surface.triangles, [this](std::size_t f) { return m_kept_of_face[f] != no_face; });
+      if(m_adjacent.empty())
+        m_adjacent = face_adjacency(m_surface.triangles, [this](std::size_t f) { return m_kept_of_face[f] != no_face; });
     });
   }
 
@@ -716,11 +711,11 @@ public:
     const double r2 = std::isfinite(radius) ? radius * radius : std::numeric_limits<double>::infinity();
     std::uint32_t f = no_face;
     double d2 = 0;
-    if(!m_points.nearest(q, r2, f, d2))
+    if(!nearest_sample(q, r2, f, d2))
       return best;
     if(!(SAI::dot(m_normals[f], normal) > min_dot)) {
       f = no_face;
-      m_points.k_nearest(q, 8, buffer, r2);
+      nearest_samples(q, 8, buffer, r2);
       for(const auto& c : buffer)
         if(SAI::dot(m_normals[c.second], normal) > min_dot) {
           f = c.second;
@@ -755,9 +750,9 @@ public:
     if(!std::isfinite(radius))
       return true;
     const double r = radius + m_cover;
-    std::uint32_t id = 0;
+    std::uint32_t f = no_face;
     double d2 = 0;
-    return m_points.nearest(q, r * r, id, d2);
+    return nearest_sample(q, r * r, f, d2);
   }
 
   // The point of face f at barycentric coordinates b.
@@ -768,6 +763,195 @@ public:
   }
 
 private:
+  typedef SAI::Bvh::Box Box;
+
+  // The faces of positive area, their points (centroids, and grids on faces much longer than
+  // usual, so that every point of a face lies within `m_cover` of one of its points: twice the
+  // median longest edge) and the two hierarchies.
+  void build()
+  {
+    const Surface& s = m_surface;
+    m_normals = s.face_normals();
+    m_local_once = std::make_unique<std::once_flag>();
+    m_samples_ready.store(false);
+    m_grid = Distance_grid();
+    m_face_of.clear();
+    m_kept_of_face.assign(s.triangles.size(), no_face);
+    m_adjacent.clear();
+    m_triangles = SAI::Bvh();
+    std::vector<Vector_3d> centroids;
+    for(std::size_t f = 0; f < s.triangles.size(); ++f) {
+      if(!(m_normals[f].squared_length() > 0))
+        continue;
+      const auto c = s.corners(f);
+      m_kept_of_face[f] = std::uint32_t(m_face_of.size());
+      m_face_of.push_back(std::uint32_t(f));
+      centroids.push_back((c[0] + c[1] + c[2]) / 3.0);
+    }
+    if(m_face_of.empty())
+      return;
+    m_triangles = SAI::Bvh(centroids, [&](std::uint32_t k) { return triangle_box(m_face_of[k]); });
+    m_leaf_face.resize(m_triangles.size());
+    for(std::size_t j = 0; j < m_leaf_face.size(); ++j)
+      m_leaf_face[j] = m_face_of[m_triangles.item(j)];
+    leaf_corners();
+    place_samples();
+    // The vertices in the order of the leaves (each where its first face is met).
+    m_vertex_order.clear();
+    std::vector<char> seen(s.points.size(), 0);
+    for(std::uint32_t f : m_leaf_face)
+      for(std::uint32_t v : s.triangles[f])
+        if(!seen[v]) {
+          seen[v] = 1;
+          m_vertex_order.push_back(v);
+        }
+    for(std::size_t v = 0; v < seen.size(); ++v)
+      if(!seen[v])
+        m_vertex_order.push_back(std::uint32_t(v));
+  }
+
+  // The corners of the faces in the order of the leaves of their hierarchy.
+  void leaf_corners()
+  {
+    m_leaf_corners.resize(m_leaf_face.size());
+    for(std::size_t j = 0; j < m_leaf_face.size(); ++j)
+      m_leaf_corners[j] = m_surface.corners(m_leaf_face[j]);
+  }
+
+  // The points that represent the faces of positive area, and `m_cover`: twice the median longest
+  // edge. A face whose longest edge is longer is represented by a grid of n + 1 points a side
+  // (spacing at most m_cover), the others by their centroid, so that every point of a face lies
+  // within m_cover of one of its points. A function of the positions only, so that queries do
+  // not depend on the history of the index; the points are made when a query meets their face
+  // (per position of the hierarchy: n, 0 for the centroid).
+  void place_samples()
+  {
+    m_leaf_grid.assign(m_leaf_face.size(), 0);
+    if(m_leaf_face.empty())
+      return;
+    std::vector<double> longest(m_leaf_face.size());
+    for(std::size_t j = 0; j < m_leaf_face.size(); ++j)
+      longest[j] = longest_edge(m_leaf_face[j]);
+    std::vector<double> sorted = longest;
+    std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+    m_cover = 2 * sorted[sorted.size() / 2];
+    for(std::size_t j = 0; j < m_leaf_face.size(); ++j)
+      if(longest[j] > m_cover)
+        m_leaf_grid[j] = std::uint32_t(std::ceil(longest[j] / m_cover));
+  }
+
+  // Calls visit(point, number) for the points of the face at position j of the hierarchy, numbered
+  // in order.
+  template <typename Visit>
+  void face_samples(std::size_t j, const Visit& visit) const
+  {
+    samples_of(m_leaf_corners[j], m_leaf_grid[j], visit);
+  }
+
+  // The points of a face of corners c and grid size n (0: the centroid), numbered in order.
+  template <typename Visit>
+  static void samples_of(const std::array<Vector_3d, 3>& c, std::uint32_t n, const Visit& visit)
+  {
+    if(n == 0) {
+      visit((c[0] + c[1] + c[2]) / 3.0, 0u);
+      return;
+    }
+    std::uint32_t number = 0;
+    for(std::uint32_t i = 0; i <= n; ++i)
+      for(std::uint32_t k = 0; i + k <= n; ++k) {
+        const double u = double(i) / double(n), v = double(k) / double(n);
+        visit(c[0] * (1 - u - v) + c[1] * u + c[2] * v, number++);
+      }
+  }
+
+  double longest_edge(std::size_t f) const
+  {
+    const auto c = m_surface.corners(f);
+    return (std::max)((c[1] - c[0]).length(), (std::max)((c[2] - c[1]).length(), (c[0] - c[2]).length()));
+  }
+
+  Box triangle_box(std::uint32_t f) const
+  {
+    Box b;
+    for(std::uint32_t v : m_surface.triangles[f])
+      b.extend(m_surface.points[v]);
+    return b;
+  }
+
+  // The face of the nearest of the faces' points to q within sqrt(max_squared_distance), and its
+  // squared distance; false when there is none. Ties go to the smallest face, then the first of
+  // its points. From the point tree once a local search has made it (the same answers).
+  bool nearest_sample(const Vector_3d& q, double max_squared_distance, std::uint32_t& face, double& squared_distance) const
+  {
+    if(m_samples_ready.load(std::memory_order_acquire)) {
+      std::uint32_t id = 0;
+      if(!m_sample_tree.nearest(q, max_squared_distance, id, squared_distance))
+        return false;
+      face = m_sample_face[id];
+      return true;
+    }
+    std::uint32_t found = no_face, found_number = 0;
+    double best_d = max_squared_distance;
+    m_triangles.nearest(q, max_squared_distance, [&](std::uint32_t j, double& best) {
+      const std::uint32_t f = m_leaf_face[j];
+      face_samples(j, [&](const Vector_3d& p, std::uint32_t number) {
+        const double d = (p - q).squared_length();
+        if(d < best_d || (d == best_d && (found == no_face || f < found || (f == found && number < found_number)))) {
+          best_d = d;
+          found = f;
+          found_number = number;
+          best = d;
+        }
+      });
+    });
+    if(found == no_face)
+      return false;
+    face = found;
+    squared_distance = best_d;
+    return true;
+  }
+
+  // The faces of the (at most) `count` nearest of the faces' points to q closer than
+  // sqrt(max_squared_distance), nearest first, with their squared distances (a long face may
+  // come several times; ties in the order of the faces, then of their points).
+  void nearest_samples(const Vector_3d& q, std::size_t count, std::vector<std::pair<double, std::uint32_t>>& result,
+                       double max_squared_distance = std::numeric_limits<double>::infinity()) const
+  {
+    result.clear();
+    if(count == 0)
+      return;
+    if(m_samples_ready.load(std::memory_order_acquire)) {
+      m_sample_tree.k_nearest(q, count, result, max_squared_distance);
+      for(auto& r : result)
+        r.second = m_sample_face[r.second];
+      return;
+    }
+    typedef std::pair<double, std::pair<std::uint32_t, std::uint32_t>> Candidate; // (d, (face, number))
+    std::vector<Candidate> heap;
+    heap.reserve(count);
+    m_triangles.nearest(q, max_squared_distance, [&](std::uint32_t j, double& best) {
+      const std::uint32_t f = m_leaf_face[j];
+      face_samples(j, [&](const Vector_3d& p, std::uint32_t number) {
+        const Candidate c((p - q).squared_length(), {f, number});
+        if(!(c.first < max_squared_distance))
+          return;
+        if(heap.size() < count) {
+          heap.push_back(c);
+          std::push_heap(heap.begin(), heap.end());
+        } else if(c < heap.front()) {
+          std::pop_heap(heap.begin(), heap.end());
+          heap.back() = c;
+          std::push_heap(heap.begin(), heap.end());
+        }
+        if(heap.size() == count)
+          best = heap.front().first;
+      });
+    });
+    std::sort(heap.begin(), heap.end());
+    for(const Candidate& c : heap)
+      result.emplace_back(c.first, c.second.first);
+  }
+
   Surface_point exact_on_face(const Vector_3d& q, std::uint32_t f) const
   {
     Surface_point r;
@@ -784,7 +968,7 @@ private:
   {
     Surface_point best;
     std::vector<std::pair<double, std::uint32_t>> near;
-    m_points.k_nearest(q, candidates, near);
+    nearest_samples(q, candidates, near);
     for(const auto& c : near) {
       if(!(SAI::dot(m_normals[c.second], normal) > min_dot))
         continue;
@@ -802,19 +986,23 @@ private:
     return best;
   }
 
-  static K::Point_3 point(const Vector_3d& v) { return K::Point_3(v.x, v.y, v.z); }
-
-  const Surface m_surface;
+  Surface m_surface;
   std::vector<Vector_3d> m_normals;
-  std::vector<Triangle> m_triangles;
-  std::vector<std::uint32_t> m_face_of;      // per triangle of the tree: its face
-  std::vector<std::uint32_t> m_kept_of_face; // per face: its triangle in the tree, or no_face
+  std::vector<std::uint32_t> m_face_of;      // per face of positive area: its face
+  std::vector<std::uint32_t> m_kept_of_face; // per face: its position among those, or no_face
   std::unique_ptr<std::once_flag> m_local_once = std::make_unique<std::once_flag>();
   mutable std::vector<std::array<std::uint32_t, 3>> m_adjacent; // per face: the face across each edge
   mutable Distance_grid m_grid;
-  SAI::Point_tree m_points;   // centroids of the faces (grids on long faces), with their faces
   double m_cover = 0;
-  Tree m_tree;
+  SAI::Bvh m_triangles; // over the faces of positive area (their positions in m_face_of)
+  std::vector<std::uint32_t> m_leaf_face;                // per position of m_triangles: its face
+  std::vector<std::array<Vector_3d, 3>> m_leaf_corners;  // and its corners
+  std::vector<std::uint32_t> m_leaf_grid;                // and the size of the grid of its points
+  std::vector<std::uint32_t> m_vertex_order;
+  // Made by the first local search: the faces' points in a point tree, with their faces.
+  mutable SAI::Point_tree m_sample_tree;
+  mutable std::vector<std::uint32_t> m_sample_face;
+  mutable std::atomic<bool> m_samples_ready{false};
 };
 
 // ---------------------------------------------------------------------------------------------
