@@ -1,5 +1,6 @@
 // Tests of the machinery shared by the packages: named parameters, weighted dual graph, s-t
 // min-cut, agglomerative normalized-cut clustering, component links, partition refinement, kd-tree,
+// bounding-volume hierarchy (refitted),
 // mesh checks, JSON, and the procedural shape generator used by the other suites.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -10,6 +11,7 @@
 
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/parameters.h>
+#include <CGAL/Shape_analysis/internal/Bvh.h>
 #include <CGAL/Shape_analysis/internal/Component_links.h>
 #include <CGAL/Shape_analysis/internal/Dual_graph.h>
 #include <CGAL/Shape_analysis/internal/Json.h>
@@ -1143,6 +1145,66 @@ TEST(PointTree, KNearestMatchesBruteForce)
   }
   SAI::Point_tree().k_nearest(Vector_3d(), 3, result);
   EXPECT_TRUE(result.empty());
+}
+
+// Boxes (segments) around random points: the nearest segment through the hierarchy is the one a
+// brute-force scan finds, before and after the segments move and the boxes are refitted.
+TEST(Bvh, NearestMatchesBruteForceAfterRefit)
+{
+  SAI::Procedural_random rng(7);
+  const std::size_t n = 700;
+  std::vector<Vector_3d> a(n), b(n);
+  for(std::size_t i = 0; i < n; ++i) {
+    a[i] = Vector_3d(rng.uniform(), rng.uniform(), rng.uniform());
+    b[i] = a[i] + Vector_3d(rng.uniform(-0.05, 0.05), rng.uniform(-0.05, 0.05), rng.uniform(-0.05, 0.05));
+  }
+  // The squared distance from q to segment i.
+  const auto distance = [&](std::size_t i, const Vector_3d& q) {
+    const Vector_3d d = b[i] - a[i];
+    const double t = (std::max)(0.0, (std::min)(1.0, SAI::dot(q - a[i], d) / d.squared_length()));
+    return (a[i] + d * t - q).squared_length();
+  };
+  const auto box_of = [&](std::uint32_t i) {
+    SAI::Bvh::Box box;
+    box.extend(a[i]);
+    box.extend(b[i]);
+    return box;
+  };
+  std::vector<Vector_3d> centers(n);
+  for(std::size_t i = 0; i < n; ++i)
+    centers[i] = (a[i] + b[i]) * 0.5;
+  SAI::Bvh bvh(centers, box_of);
+  EXPECT_EQ(bvh.size(), n);
+  for(int round = 0; round < 2; ++round) {
+    if(round == 1) { // every segment moves (up to a fifth of the cube): the tree no longer fits well
+      for(std::size_t i = 0; i < n; ++i) {
+        const Vector_3d m(rng.uniform(-0.2, 0.2), rng.uniform(-0.2, 0.2), rng.uniform(-0.2, 0.2));
+        a[i] += m;
+        b[i] += m;
+      }
+      bvh.refit(box_of);
+    }
+    for(int k = 0; k < 300; ++k) {
+      const Vector_3d q(rng.uniform(-0.3, 1.3), rng.uniform(-0.3, 1.3), rng.uniform(-0.3, 1.3));
+      double expected = std::numeric_limits<double>::infinity();
+      for(std::size_t i = 0; i < n; ++i)
+        expected = (std::min)(expected, distance(i, q));
+      std::size_t visited = 0;
+      const double found = bvh.nearest(q, std::numeric_limits<double>::infinity(), [&](std::uint32_t j, double& best) {
+        ++visited;
+        best = (std::min)(best, distance(bvh.item(j), q));
+      });
+      EXPECT_EQ(found, expected) << "round " << round << " query " << k;
+      EXPECT_LT(visited, n) << "the boxes prune";
+      // A bound below the nearest distance finds nothing closer.
+      EXPECT_EQ(bvh.nearest(q, 0.5 * expected, [&](std::uint32_t j, double& best) {
+                  best = (std::min)(best, distance(bvh.item(j), q));
+                }),
+                0.5 * expected);
+    }
+  }
+  EXPECT_TRUE(SAI::Bvh().empty());
+  EXPECT_EQ(SAI::Bvh().nearest(Vector_3d(), 1.0, [](std::uint32_t, double&) {}), 1.0);
 }
 
 // ---------------------------------------------------------------------------------------------

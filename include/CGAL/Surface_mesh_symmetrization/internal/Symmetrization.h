@@ -844,6 +844,7 @@ private:
     std::vector<Vector_3d> best_x = x;
     double best_error = std::numeric_limits<double>::infinity();
     std::vector<std::vector<Mirror>> mirrors;
+    std::size_t halvings = 0;
     for(std::size_t step = 0;; ++step) {
       mirrors = exact_mirrors(level, x, &mirrors);
       const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
@@ -853,6 +854,16 @@ private:
         best_error = e;
         best_x = x;
         out.mirrors = mirrors;
+        halvings = 0;
+      } else if(step < m_o.refinement_steps && halvings < 2) {
+        // A step that made the error larger (the linearization does not hold that far): half of
+        // it, from the best positions (one more search, no solve).
+        ++halvings;
+        for(std::size_t i = 0; i < x.size(); ++i)
+          x[i] = (x[i] + best_x[i]) * 0.5;
+        out.iterations.push_back(Iteration_record{0, 1.0, 0.0});
+        --step;
+        continue;
       }
       if(e <= m_o.target_error || step >= m_o.refinement_steps)
         break;
