@@ -19,6 +19,20 @@ namespace CGAL {
 namespace Shape_analysis {
 namespace internal {
 
+// Offers `c` to `heap`, a max-heap that keeps the (at most) k smallest values offered.
+template <typename T>
+void keep_k_smallest(std::vector<T>& heap, std::size_t k, const T& c)
+{
+  if(heap.size() < k) {
+    heap.push_back(c);
+    std::push_heap(heap.begin(), heap.end());
+  } else if(c < heap.front()) {
+    std::pop_heap(heap.begin(), heap.end());
+    heap.back() = c;
+    std::push_heap(heap.begin(), heap.end());
+  }
+}
+
 class Point_tree
 {
 public:
@@ -91,15 +105,7 @@ private:
     if(!(cell_distance < max_squared_distance))
       return;
     auto offer = [&](std::uint32_t position) {
-      const std::pair<double, std::uint32_t> c((m_points[position] - q).squared_length(), position);
-      if(heap.size() < k) {
-        heap.push_back(c);
-        std::push_heap(heap.begin(), heap.end());
-      } else if(c < heap.front()) {
-        std::pop_heap(heap.begin(), heap.end());
-        heap.back() = c;
-        std::push_heap(heap.begin(), heap.end());
-      }
+      keep_k_smallest(heap, k, std::pair<double, std::uint32_t>((m_points[position] - q).squared_length(), position));
     };
     if(end - begin <= leaf_size) {
       for(std::size_t i = begin; i < end; ++i)

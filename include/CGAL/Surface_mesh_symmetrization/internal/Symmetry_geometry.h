@@ -935,14 +935,7 @@ private:
         const Candidate c((p - q).squared_length(), {f, number});
         if(!(c.first < max_squared_distance))
           return;
-        if(heap.size() < count) {
-          heap.push_back(c);
-          std::push_heap(heap.begin(), heap.end());
-        } else if(c < heap.front()) {
-          std::pop_heap(heap.begin(), heap.end());
-          heap.back() = c;
-          std::push_heap(heap.begin(), heap.end());
-        }
+        SAI::keep_k_smallest(heap, count, c);
         if(heap.size() == count)
           best = heap.front().first;
       });
