@@ -72,6 +72,11 @@ segment blobby_3cc 3
   --output "$out/street_segmented.ply" --report "$out/street_segments.json" --verbose
 "$tool" points evaluate --truth "$out/street_objects.json" --locations "$out/street_locations.csv" \
   --objects "$out/street_segmented.ply" --report "$out/street_evaluation.json"
+# The same chain in one command, tile by tile (tiles of 100 m with a margin of 10 m), evaluated.
+"$tool" points recognize "$out/street_scan.ply" --tile-size 100 --output "$out/street_recognized.ply" \
+  --locations "$out/street_recognized.csv" --report "$out/street_recognized.json" --verbose
+"$tool" points evaluate --truth "$out/street_objects.json" --locations "$out/street_recognized.csv" \
+  --objects "$out/street_recognized.ply" --report "$out/street_recognized_evaluation.json"
 "$tool" points background "$data/b9_training.ply" --max-extent 6 --spacing 1 --isolation-radius 1 \
   --output "$out/b9_foreground.ply" --report "$out/b9_foreground.json" --verbose
 

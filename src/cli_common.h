@@ -20,6 +20,12 @@
 #include <string>
 #include <vector>
 
+namespace CGAL {
+namespace Point_set_object_recognition {
+enum class Localization_method;
+} // namespace Point_set_object_recognition
+} // namespace CGAL
+
 namespace shape_analysis_cli {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
@@ -221,6 +227,13 @@ struct Truth_object
 // "location": [x, y, z] and "scanned_points"; only "location" is required). An empty array gives
 // no object; throws Cli_error on a file that cannot be read or an object without a location.
 std::vector<Truth_object> read_truth_objects(const std::string& path);
+
+// The localization method of a command-line name: nc, meanshift (mean-shift), image, cc (the
+// default for any other name; CLI11 checks the names).
+CGAL::Point_set_object_recognition::Localization_method localization_method(const std::string& name);
+
+// locations.csv: a header line `x,y,z`, then one location per line (17 significant digits).
+void write_locations_csv(std::ostream& out, const std::vector<std::array<double, 3>>& locations);
 
 } // namespace shape_analysis_cli
 

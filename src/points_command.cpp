@@ -279,16 +279,6 @@ bool has_extension(const std::string& path, const std::string& extension)
   return ext == extension;
 }
 
-PSOR::Localization_method localization_method(const std::string& name)
-{
-  if(name == "nc")
-    return PSOR::Localization_method::NORMALIZED_CUT;
-  if(name == "meanshift" || name == "mean-shift")
-    return PSOR::Localization_method::MEAN_SHIFT;
-  if(name == "image")
-    return PSOR::Localization_method::HEIGHT_IMAGE;
-  return PSOR::Localization_method::CONNECTED_COMPONENTS; // cc, components
-}
 
 int run_locate(const Locate_options& o)
 {
@@ -355,9 +345,10 @@ int run_locate(const Locate_options& o)
       l.position[std::size_t(c)] += read.offset[std::size_t(c)];
   outputs.stage(o.output, false, [&](std::ostream& out) {
     if(csv) {
-      out << std::setprecision(17) << "x,y,z\n";
+      std::vector<std::array<double, 3>> positions;
       for(const PSOR::Object_location& l : located)
-        out << l.position[0] << ',' << l.position[1] << ',' << l.position[2] << '\n';
+        positions.push_back(l.position);
+      write_locations_csv(out, positions);
       return;
     }
     Json list = Json::array();
@@ -434,6 +425,24 @@ int run_locate(const Locate_options& o)
 }
 
 } // namespace
+
+CGAL::Point_set_object_recognition::Localization_method localization_method(const std::string& name)
+{
+  if(name == "nc")
+    return CGAL::Point_set_object_recognition::Localization_method::NORMALIZED_CUT;
+  if(name == "meanshift" || name == "mean-shift")
+    return CGAL::Point_set_object_recognition::Localization_method::MEAN_SHIFT;
+  if(name == "image")
+    return CGAL::Point_set_object_recognition::Localization_method::HEIGHT_IMAGE;
+  return CGAL::Point_set_object_recognition::Localization_method::CONNECTED_COMPONENTS; // cc, components
+}
+
+void write_locations_csv(std::ostream& out, const std::vector<std::array<double, 3>>& locations)
+{
+  out << std::setprecision(17) << "x,y,z\n";
+  for(const auto& l : locations)
+    out << l[0] << ',' << l[1] << ',' << l[2] << '\n';
+}
 
 std::vector<Truth_object> read_truth_objects(const std::string& path)
 {

@@ -3,6 +3,8 @@
 
 // shape_analysis points segment IN --locations locations.csv --method mincut-auto|mincut|cc|all
 //                                  [--radius r] --output objects.ply --report R.json
+// shape_analysis points recognize IN --output objects.ply [--locations locations.csv]
+//                                    [--tile-size 100] [--tile-margin 10] --report R.json
 // shape_analysis points evaluate --truth truth.json [--locations locations.csv] [--objects objects.ply]
 //                                 --report R.json
 //
@@ -18,11 +20,13 @@
 #include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
 #include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/read_point_set.h>
+#include <CGAL/Point_set_object_recognition/recognize_objects.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
 #include <CGAL/Point_set_object_recognition/segment_objects.h>
 
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -99,6 +103,68 @@ std::vector<Location> read_locations(const std::string& path)
   return r;
 }
 
+// The segmentation method of a command-line name: all, cc, mincut, mincut-auto (the default).
+PSOR::Segmentation_method segmentation_method(const std::string& name)
+{
+  return name == "all"      ? PSOR::Segmentation_method::ALL_WITHIN_RADIUS
+         : name == "cc"     ? PSOR::Segmentation_method::CONNECTED_COMPONENTS
+         : name == "mincut" ? PSOR::Segmentation_method::MIN_CUT
+                            : PSOR::Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS;
+}
+
+// The report's "objects": per object its location, points, radius, cut and seconds.
+Json objects_report(const std::vector<std::array<double, 3>>& locations, const std::vector<PSOR::Object_segmentation>& objects)
+{
+  Json list = Json::array();
+  for(std::size_t k = 0; k < objects.size(); ++k) {
+    Json j = Json::object();
+    j["location"] = Json(std::vector<double>{locations[k][0], locations[k][1], locations[k][2]});
+    j["points"] = objects[k].points.size();
+    j["radius"] = objects[k].radius;
+    j["cut"] = objects[k].cut_cost;
+    j["seconds"] = objects[k].seconds;
+    list.push_back(j);
+  }
+  return list;
+}
+
+// Stages objects.ply: the input's points in input order with their properties, 'object' (per point
+// its location's row, -1 for none), 'ground' (1 for ground) and, unless the input has colours,
+// colours by object (grey for none).
+void stage_objects_ply(Output_files& outputs, const std::string& path, const std::string& input,
+                       const CGAL::Point_set_3<Point_3>& points, const std::vector<int>& object,
+                       const std::vector<char>& ground, const std::string& command)
+{
+  outputs.stage(path, true, [&](std::ostream& out) {
+    CGAL::Point_set_3<Point_3> result = points;
+    auto object_map = result.add_property_map<int>("object", -1);
+    auto ground_map = result.add_property_map<unsigned char>("ground", 0);
+    if(!object_map.second || !ground_map.second)
+      throw Cli_error(input + " already has an 'object' or a 'ground' property");
+    const bool coloured = !result.has_property_map<unsigned char>("red") && !result.has_property_map<unsigned char>("green") &&
+                          !result.has_property_map<unsigned char>("blue");
+    CGAL::Point_set_3<Point_3>::Property_map<unsigned char> red, green, blue;
+    if(coloured) {
+      red = result.add_property_map<unsigned char>("red", 0).first;
+      green = result.add_property_map<unsigned char>("green", 0).first;
+      blue = result.add_property_map<unsigned char>("blue", 0).first;
+    }
+    std::size_t k = 0;
+    for(auto i : result) {
+      object_map.first[i] = object[k];
+      ground_map.first[i] = ground[k] ? 1 : 0;
+      if(coloured) {
+        const auto c = object[k] < 0 ? std::array<unsigned char, 3>{{160, 160, 160}} : label_colour(std::size_t(object[k]) + 1);
+        red[i] = c[0], green[i] = c[1], blue[i] = c[2];
+      }
+      ++k;
+    }
+    CGAL::IO::set_mode(out, CGAL::IO::BINARY);
+    if(!CGAL::IO::write_PLY(out, result, "written by shape_analysis " + command + " (CGAL Global Shape Analysis)"))
+      throw Cli_error("cannot write " + path);
+  });
+}
+
 struct Segment_options
 {
   std::string input, locations, output, report, method = "mincut-auto";
@@ -147,10 +213,7 @@ int run_segment(const Segment_options& o)
   for(const Location& l : requested)
     locations.push_back({l[0], l[1], std::isnan(l[2]) ? background.ground.height(l[0], l[1]) : l[2]});
 
-  const PSOR::Segmentation_method method = o.method == "all"     ? PSOR::Segmentation_method::ALL_WITHIN_RADIUS
-                                           : o.method == "cc"    ? PSOR::Segmentation_method::CONNECTED_COMPONENTS
-                                           : o.method == "mincut" ? PSOR::Segmentation_method::MIN_CUT
-                                                                  : PSOR::Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS;
+  const PSOR::Segmentation_method method = segmentation_method(o.method);
   progress.stage("segmenting " + std::to_string(locations.size()) + " objects among " + std::to_string(kept.size()) +
                  " points above the ground");
   PSOR::Segmentation_result r;
@@ -168,34 +231,10 @@ int run_segment(const Segment_options& o)
   for(std::size_t k = 0; k < above.size() && !r.object_of_point.empty(); ++k)
     if(r.object_of_point[k] != PSOR::Segmentation_result::no_object)
       object[above[k]] = int(r.object_of_point[k]);
-  outputs.stage(o.output, true, [&](std::ostream& out) {
-    CGAL::Point_set_3<Point_3> result = points;
-    auto object_map = result.add_property_map<int>("object", -1);
-    auto ground_map = result.add_property_map<unsigned char>("ground", 0);
-    if(!object_map.second || !ground_map.second)
-      throw Cli_error(o.input + " already has an 'object' or a 'ground' property");
-    const bool coloured = !result.has_property_map<unsigned char>("red") && !result.has_property_map<unsigned char>("green") &&
-                          !result.has_property_map<unsigned char>("blue");
-    CGAL::Point_set_3<Point_3>::Property_map<unsigned char> red, green, blue;
-    if(coloured) {
-      red = result.add_property_map<unsigned char>("red", 0).first;
-      green = result.add_property_map<unsigned char>("green", 0).first;
-      blue = result.add_property_map<unsigned char>("blue", 0).first;
-    }
-    std::size_t k = 0;
-    for(auto i : result) {
-      object_map.first[i] = object[k];
-      ground_map.first[i] = background.kind[k] == PSOR::Point_kind::GROUND ? 1 : 0;
-      if(coloured) {
-        const auto c = object[k] < 0 ? std::array<unsigned char, 3>{{160, 160, 160}} : label_colour(std::size_t(object[k]) + 1);
-        red[i] = c[0], green[i] = c[1], blue[i] = c[2];
-      }
-      ++k;
-    }
-    CGAL::IO::set_mode(out, CGAL::IO::BINARY);
-    if(!CGAL::IO::write_PLY(out, result, "written by shape_analysis points segment (CGAL Global Shape Analysis)"))
-      throw Cli_error("cannot write " + o.output);
-  });
+  std::vector<char> ground(points.size(), 0);
+  for(std::size_t k = 0; k < ground.size(); ++k)
+    ground[k] = background.kind[k] == PSOR::Point_kind::GROUND;
+  stage_objects_ply(outputs, o.output, o.input, points, object, ground, "points segment");
   if(!o.report.empty()) {
     Json report = Json::object();
     report["command"] = "points segment";
@@ -212,17 +251,7 @@ int run_segment(const Segment_options& o)
     report["parameters"] = parameters;
     report["seconds_segmentation"] = seconds;
     report["seconds_graph"] = r.preparation_seconds;
-    Json list = Json::array();
-    for(std::size_t k = 0; k < r.objects.size(); ++k) {
-      Json j = Json::object();
-      j["location"] = Json(std::vector<double>{locations[k][0], locations[k][1], locations[k][2]});
-      j["points"] = r.objects[k].points.size();
-      j["radius"] = r.objects[k].radius;
-      j["cut"] = r.objects[k].cut_cost;
-      j["seconds"] = r.objects[k].seconds;
-      list.push_back(j);
-    }
-    report["objects"] = list;
+    report["objects"] = objects_report(locations, r.objects);
     // "seconds": the whole run, reading included.
     stage_report(outputs, o.report, report, total.seconds(), read_seconds, total.seconds(), {{"objects", o.output}});
   }
@@ -233,6 +262,113 @@ int run_segment(const Segment_options& o)
     claimed += v >= 0;
   std::cout << o.input << ": " << locations.size() << " objects segmented (" << claimed << " of " << points.size()
             << " points) in " << seconds << " s\n";
+  return 0;
+}
+
+struct Recognize_options
+{
+  std::string input, output, locations, report, method = "nc", segmentation = "mincut-auto";
+  double tile = 100, margin = 10, radius = 2;
+  std::size_t threads = 0;
+  bool quiet = false, verbose = false;
+};
+
+int run_recognize(const Recognize_options& o)
+{
+  Stopwatch total;
+  Progress progress("points recognize", o.quiet, o.verbose);
+  Output_files outputs;
+  outputs.add_input(o.input);
+  require_extension(o.output, ".ply", "segmented points");
+  outputs.add_output(o.output, "segmented points");
+  if(!o.locations.empty()) {
+    require_extension(o.locations, ".csv", "locations");
+    outputs.add_output(o.locations, "locations");
+  }
+  outputs.add_optional_output(o.report, "report");
+  if(!(o.tile > 0) || !std::isfinite(o.tile))
+    throw Usage_error("--tile-size must be a positive number");
+  if(!(o.margin >= 0) || !std::isfinite(o.margin))
+    throw Usage_error("--tile-margin must be zero or a positive number");
+  if(!(o.radius > 0) || !std::isfinite(o.radius))
+    throw Usage_error("--radius must be a positive number");
+
+  progress.stage("reading " + o.input);
+  Stopwatch reading;
+  CGAL::Point_set_3<Point_3> points;
+  // In the file's coordinates, as 'points segment' (doubles keep UTM coordinates to 0.1 um).
+  const PSOR::Point_set_read_result read =
+    PSOR::read_point_set(o.input, points, PSOR::parameters::shift_to_local_origin(false));
+  const double read_seconds = reading.seconds();
+  if(points.empty())
+    throw Cli_error(o.input + ": the point cloud is empty");
+
+  progress.stage("recognizing objects among " + std::to_string(points.size()) + " points, tiles of " +
+                 std::to_string(o.tile) + " m");
+  Stopwatch work;
+  const PSOR::Object_recognition_result r = PSOR::recognize_objects(
+    points, PSOR::parameters::tile_size(o.tile)
+              .tile_margin(o.margin)
+              .localization_method(localization_method(o.method))
+              .segmentation_method(segmentation_method(o.segmentation))
+              .background_radius(o.radius)
+              .number_of_threads(o.threads));
+  const double seconds = work.seconds();
+
+  progress.stage("writing " + o.output);
+  std::vector<int> object(points.size(), -1);
+  std::vector<char> ground(points.size(), 0);
+  for(std::size_t k = 0; k < object.size(); ++k) {
+    if(r.object_of_point[k] != PSOR::Object_recognition_result::no_object)
+      object[k] = int(r.object_of_point[k]);
+    ground[k] = r.kind[k] == PSOR::Point_kind::GROUND;
+  }
+  stage_objects_ply(outputs, o.output, o.input, points, object, ground, "points recognize");
+  if(!o.locations.empty())
+    outputs.stage(o.locations, false, [&](std::ostream& out) {
+      std::vector<std::array<double, 3>> positions;
+      for(const PSOR::Object_location& l : r.locations)
+        positions.push_back(l.position);
+      write_locations_csv(out, positions);
+    });
+  if(!o.report.empty()) {
+    Json report = Json::object();
+    report["command"] = "points recognize";
+    report["input"] = o.input;
+    report["format"] = read.format;
+    report["number_of_points"] = points.size();
+    Json parameters = Json::object();
+    parameters["tile_size"] = o.tile;
+    parameters["tile_margin"] = o.margin;
+    parameters["method"] = o.method;
+    parameters["segmentation"] = o.segmentation;
+    parameters["radius"] = o.radius;
+    parameters["threads"] = o.threads;
+    report["parameters"] = parameters;
+    report["points_per_second"] = seconds > 0 ? double(points.size()) / seconds : 0.0;
+    report["largest_tile_points"] = r.largest_tile;
+    Json tiles = Json::array();
+    for(const PSOR::Scene_tile& t : r.tiles) {
+      Json j = Json::object();
+      j["min"] = Json(std::vector<double>{t.min[0], t.min[1]});
+      j["max"] = Json(std::vector<double>{t.max[0], t.max[1]});
+      j["points"] = t.number_of_points;
+      j["locations"] = t.number_of_locations;
+      j["seconds"] = t.seconds;
+      tiles.push_back(j);
+    }
+    report["tiles"] = tiles;
+    std::vector<std::array<double, 3>> at;
+    for(const PSOR::Object_location& l : r.locations)
+      at.push_back(l.position);
+    report["objects"] = objects_report(at, r.objects);
+    stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(),
+                 {{"objects", o.output}, {"locations", o.locations}});
+  }
+  outputs.commit();
+  progress.done();
+  std::cout << o.input << ": " << r.locations.size() << " objects in " << r.tiles.size() << " tiles (at most "
+            << r.largest_tile << " points each) in " << seconds << " s\n";
   return 0;
 }
 
@@ -410,6 +546,32 @@ void add_points_segment_commands(CLI::App* points, std::function<int()>& run)
   segment->add_flag("-q,--quiet", s->quiet, "No progress on stderr");
   segment->add_flag("-v,--verbose", s->verbose, "Progress on stderr even when it is not a terminal");
   segment->callback([s, &run]() { run = [s]() { return run_segment(*s); }; });
+
+  auto g = std::make_shared<Recognize_options>();
+  CLI::App* recognize = points->add_subcommand(
+    "recognize", "Find and segment the objects of a scan of any size, tile by tile (ground estimate, background "
+                 "removal, localization, min-cut segmentation): the memory of one tile at a time.");
+  recognize->add_option("input", g->input, "The scan (.ply, .xyz, .las, .bin), metres, z up")->required();
+  recognize->add_option("-o,--output", g->output,
+                        "The input's points in input order (.ply) with their properties, 'object' (the 0-based row "
+                        "of the location in --locations, -1 for none) and 'ground' (1: ground)")
+    ->required();
+  recognize->add_option("--locations", g->locations, "The locations found (.csv: a header line x,y,z, then one per line)");
+  recognize->add_option("--tile-size", g->tile, "Side of the square tiles (m)")->capture_default_str();
+  recognize->add_option("--tile-margin", g->margin, "Band around a tile whose points it is processed with (m)")
+    ->capture_default_str();
+  recognize->add_option("--method", g->method, "Localization: nc, cc, meanshift or image")
+    ->capture_default_str()
+    ->check(CLI::IsMember({"nc", "cc", "meanshift", "image"}));
+  recognize->add_option("--segmentation", g->segmentation, "mincut-auto (radius 1-5 m chosen per object), mincut, cc or all")
+    ->capture_default_str()
+    ->check(CLI::IsMember({"mincut-auto", "mincut", "cc", "all"}));
+  recognize->add_option("--radius", g->radius, "Background radius of mincut, radius of cc and all (m)")->capture_default_str();
+  recognize->add_option("--report", g->report, "JSON report (seconds, points per second, tiles; per object: location, points, radius, cut, seconds)");
+  recognize->add_option("--threads", g->threads, "Largest number of threads (0: all cores)")->capture_default_str();
+  recognize->add_flag("-q,--quiet", g->quiet, "No progress on stderr");
+  recognize->add_flag("-v,--verbose", g->verbose, "Progress on stderr even when it is not a terminal");
+  recognize->callback([g, &run]() { run = [g]() { return run_recognize(*g); }; });
 
   auto e = std::make_shared<Evaluate_options>();
   CLI::App* evaluate = points->add_subcommand(

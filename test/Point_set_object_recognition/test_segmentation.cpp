@@ -3,12 +3,14 @@
 
 // Segmentation of objects from their locations: scanned procedural streets with known objects
 // (precision and recall), a post touching a wall and two touching newspaper boxes built here,
-// the interactive segmenter's constraints, determinism across thread counts, bad input.
+// the interactive segmenter's constraints, determinism across thread counts, bad input; the
+// whole chain tile by tile (recognize_objects) against one tile.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Point_set_3.h>
 
 #include <CGAL/Point_set_object_recognition/internal/Scanned_objects.h>
+#include <CGAL/Point_set_object_recognition/recognize_objects.h>
 #include <CGAL/Point_set_object_recognition/segment_objects.h>
 #include <CGAL/Shape_analysis/internal/Random.h>
 
@@ -16,6 +18,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -347,6 +350,147 @@ TEST(Segmentation, BadInput)
   }
   // No location: no object.
   EXPECT_TRUE(PSOR::segment_objects(c.points, std::vector<std::array<double, 3>>()).objects.empty());
+}
+
+// A whole generated scan (ground included) with its truth: the input of recognize_objects().
+struct Whole_scan
+{
+  std::vector<Point> points;
+  std::vector<int> instance;
+  std::map<int, int> class_of_instance;
+  std::vector<std::array<double, 2>> seen; // objects with enough points above the ground
+};
+
+const Whole_scan& whole_scan()
+{
+  static const Whole_scan w = [] {
+    PSI::Urban_scene_options o;
+    o.seed = 5;
+    o.target_points = 400000;
+    o.street_length = 160;
+    const PSI::Urban_scene scene = PSI::make_urban_scene(o);
+    const PSI::Urban_scan scan = PSI::scan_urban_scene(scene, o);
+    Whole_scan r;
+    for(const auto& p : scan.points) {
+      r.points.emplace_back(p.x, p.y, p.z);
+      r.instance.push_back(p.instance);
+      if(p.instance > 0)
+        r.class_of_instance[p.instance] = p.label;
+    }
+    for(const auto& l : PSI::scanned_objects(scene, scan).locations)
+      r.seen.push_back({l[0], l[1]});
+    return r;
+  }();
+  return w;
+}
+
+// The number of locations of `a` with one of `b` within `radius` (horizontally).
+std::size_t matched_locations(const std::vector<PSOR::Object_location>& a, const std::vector<PSOR::Object_location>& b,
+                              double radius)
+{
+  std::size_t m = 0;
+  for(const auto& x : a)
+    for(const auto& y : b)
+      if(std::hypot(x.position[0] - y.position[0], x.position[1] - y.position[1]) <= radius) {
+        ++m;
+        break;
+      }
+  return m;
+}
+
+TEST(Segmentation, RecognitionInTilesAgreesWithOneTile)
+{
+  const Whole_scan& w = whole_scan();
+  const PSOR::Object_recognition_result one = PSOR::recognize_objects(w.points, PSOR::parameters::tile_size(1000.0));
+  ASSERT_EQ(one.tiles.size(), 1u);
+  EXPECT_EQ(one.largest_tile, w.points.size());
+  // Tiles of 40 m along a street of 160 m (and across it): at least 8 of them.
+  const PSOR::Object_recognition_result tiled =
+    PSOR::recognize_objects(w.points, PSOR::parameters::tile_size(40.0).tile_margin(10.0));
+  ASSERT_GE(tiled.tiles.size(), 8u);
+  EXPECT_LT(tiled.largest_tile, w.points.size() / 2);
+  std::size_t sum = 0;
+  for(const auto& t : tiled.tiles) {
+    sum += t.number_of_locations;
+    EXPECT_LE(t.number_of_points, tiled.largest_tile);
+  }
+  EXPECT_EQ(sum, tiled.locations.size());
+  ASSERT_EQ(tiled.objects.size(), tiled.locations.size());
+  ASSERT_EQ(tiled.object_of_point.size(), w.points.size());
+
+  // The same objects are found: objects across a border are found once, not twice or never.
+  const PSOR::Localization_evaluation e1 = PSOR::evaluate_locations(one.locations, w.seen, 1.0);
+  const PSOR::Localization_evaluation et = PSOR::evaluate_locations(tiled.locations, w.seen, 1.0);
+  std::cerr << "one tile: " << one.locations.size() << " locations, recall " << e1.recall << ", precision "
+            << e1.precision << "; " << tiled.tiles.size() << " tiles: " << tiled.locations.size() << " locations, recall "
+            << et.recall << ", precision " << et.precision << "\n";
+  EXPECT_GE(et.recall, 0.85);
+  EXPECT_GE(et.recall, e1.recall - 0.03);
+  EXPECT_GE(double(matched_locations(one.locations, tiled.locations, 0.5)), 0.9 * double(one.locations.size()));
+  EXPECT_LE(tiled.locations.size(), one.locations.size() + one.locations.size() / 20 + 1);
+  for(std::size_t a = 0; a < tiled.locations.size(); ++a)
+    for(std::size_t b = a + 1; b < tiled.locations.size(); ++b)
+      EXPECT_GT(std::hypot(tiled.locations[a].position[0] - tiled.locations[b].position[0],
+                           tiled.locations[a].position[1] - tiled.locations[b].position[1]),
+                0.05);
+
+  // The segmentations are as good.
+  const auto s1 = PSOR::evaluate_segmentations(one.objects, w.instance, w.class_of_instance);
+  const auto st = PSOR::evaluate_segmentations(tiled.objects, w.instance, w.class_of_instance);
+  std::cerr << "segmentation: one tile " << s1.precision << " / " << s1.recall << ", tiles " << st.precision << " / "
+            << st.recall << "\n";
+  EXPECT_GE(st.precision, s1.precision - 0.03);
+  EXPECT_GE(st.recall, s1.recall - 0.03);
+  EXPECT_GE(st.recall, 0.85);
+  // A point's object holds it; points never claimed by an object are not in any.
+  std::vector<char> in_some(w.points.size(), 0);
+  for(std::size_t k = 0; k < tiled.objects.size(); ++k)
+    for(std::size_t i : tiled.objects[k].points)
+      in_some[i] = 1;
+  for(std::size_t i = 0; i < w.points.size(); ++i) {
+    const std::size_t c = tiled.object_of_point[i];
+    if(c == PSOR::Object_recognition_result::no_object) {
+      EXPECT_FALSE(in_some[i]);
+      continue;
+    }
+    ASSERT_LT(c, tiled.objects.size());
+    EXPECT_TRUE(std::binary_search(tiled.objects[c].points.begin(), tiled.objects[c].points.end(), i));
+  }
+  // The ground is found in every tile: nearly the same points as with one tile.
+  std::size_t ground1 = 0, groundt = 0, both = 0;
+  for(std::size_t i = 0; i < w.points.size(); ++i) {
+    const bool a = one.kind[i] == PSOR::Point_kind::GROUND, b = tiled.kind[i] == PSOR::Point_kind::GROUND;
+    ground1 += a, groundt += b, both += a && b;
+  }
+  EXPECT_GE(double(both), 0.98 * double(ground1));
+  EXPECT_GE(double(both), 0.98 * double(groundt));
+}
+
+TEST(Segmentation, RecognitionSameForAnyThreadCount)
+{
+  const Whole_scan& w = whole_scan();
+  const auto one = PSOR::recognize_objects(w.points, PSOR::parameters::tile_size(50.0).number_of_threads(1));
+  const auto two = PSOR::recognize_objects(w.points, PSOR::parameters::tile_size(50.0).number_of_threads(2));
+  ASSERT_EQ(one.locations.size(), two.locations.size());
+  for(std::size_t k = 0; k < one.locations.size(); ++k) {
+    EXPECT_EQ(one.locations[k].position, two.locations[k].position);
+    EXPECT_EQ(one.objects[k].points, two.objects[k].points);
+  }
+  EXPECT_EQ(one.object_of_point, two.object_of_point);
+}
+
+TEST(Segmentation, RecognitionBadInput)
+{
+  Cloud c;
+  c.post(0, 0, 0.1, 2, 0.03, 1);
+  EXPECT_THROW(PSOR::recognize_objects(std::vector<Point>()), Bad_input);
+  EXPECT_THROW(PSOR::recognize_objects(c.points, PSOR::parameters::tile_size(0.0)), Bad_input);
+  EXPECT_THROW(PSOR::recognize_objects(c.points, PSOR::parameters::tile_size(std::nan(""))), Bad_input);
+  EXPECT_THROW(PSOR::recognize_objects(c.points, PSOR::parameters::tile_margin(-1.0)), Bad_input);
+  EXPECT_THROW(PSOR::recognize_objects(c.points, PSOR::parameters::tile_size(1e-6)), Bad_input); // too many tiles
+  std::vector<Point> nan = c.points;
+  nan.emplace_back(0, std::nan(""), 0);
+  EXPECT_THROW(PSOR::recognize_objects(nan), Bad_input);
 }
 
 } // namespace

@@ -1,7 +1,8 @@
 cmake_minimum_required(VERSION 3.19)
 # `shape_analysis points segment` and `points evaluate` end to end: a scanned street with its
 # truth (generate), the true locations written as locations.csv (half of them with an empty z), the
-# objects segmented from the raw scan (segment, every method), and the evaluation against the
+# objects segmented from the raw scan (segment, every method), the whole chain in tiles (recognize),
+# and the evaluation against the
 # truth (evaluate): objects.ply keeps every input point in order with 'object' and 'instance',
 # the report has the per-object figures, min-cut's precision and recall are high; bad inputs
 # fail with a one-line reason and write nothing.
@@ -79,6 +80,28 @@ foreach(p "element vertex ${scan_points}" "property int object" "property int in
   endif()
 endforeach()
 
+# points recognize: the whole chain in tiles of 20 m on the raw scan; its locations and objects
+# evaluated against the truth.
+run_tool(points recognize "${WORK}/scene.ply" --tile-size 20 --tile-margin 10 -q --output "${WORK}/recognized.ply"
+         --locations "${WORK}/found.csv" --report "${WORK}/recognize.json")
+file(READ "${WORK}/recognize.json" report)
+string(JSON tiles LENGTH "${report}" tiles)
+string(JSON found LENGTH "${report}" objects)
+string(JSON largest GET "${report}" largest_tile_points)
+if(tiles LESS 3 OR found LESS 5 OR NOT largest LESS scan_points)
+  message(FATAL_ERROR "points recognize: ${tiles} tiles, ${found} objects, largest tile ${largest} of ${scan_points} points")
+endif()
+run_tool(points evaluate --truth "${WORK}/truth.json" --locations "${WORK}/found.csv"
+         --objects "${WORK}/recognized.ply" --report "${WORK}/evaluate_recognized.json")
+file(READ "${WORK}/evaluate_recognized.json" evaluation)
+string(JSON recall GET "${evaluation}" segmentation recall)
+string(JSON precision GET "${evaluation}" segmentation precision)
+string(JSON location_recall GET "${evaluation}" localization recall)
+message(STATUS "recognize: ${tiles} tiles, ${found} objects, localization recall ${location_recall}, segmentation precision ${precision}, recall ${recall}")
+if(location_recall LESS 0.8 OR recall LESS 0.7 OR precision LESS 0.7)
+  message(FATAL_ERROR "points recognize: localization recall ${location_recall}, segmentation ${precision} / ${recall}")
+endif()
+
 # Bad inputs: one line, non-zero exit, no output.
 function(expect_failure message)
   file(REMOVE "${WORK}/bad.ply" "${WORK}/bad.json")
@@ -107,3 +130,7 @@ expect_failure("PLY|ply" points segment "${WORK}/scene.ply" --locations "${WORK}
 expect_failure("object" points evaluate --truth "${WORK}/truth.json" --objects "${WORK}/scene.ply" --report "${WORK}/bad.json")
 expect_failure("--locations, --objects" points evaluate --truth "${WORK}/truth.json" --report "${WORK}/bad.json")
 expect_failure("cannot open" points evaluate --truth "${WORK}/nothing.json" --locations "${WORK}/locations.csv")
+expect_failure("tile-size" points recognize "${WORK}/scene.ply" --tile-size 0 ${bad})
+expect_failure("tile-margin" points recognize "${WORK}/scene.ply" --tile-margin -1 ${bad})
+expect_failure("csv" points recognize "${WORK}/scene.ply" --locations "${WORK}/bad.txt" ${bad})
+expect_failure("cannot open|nothing" points recognize "${WORK}/nothing.ply" ${bad})

@@ -93,7 +93,9 @@ namespace internal_np {
   X(graph_cell_size_t, graph_cell_size_tag, graph_cell_size)                         \
   X(maximum_graph_size_t, maximum_graph_size_tag, maximum_graph_size)                \
   X(minimum_foreground_size_t, minimum_foreground_size_tag, minimum_foreground_size) \
-  X(maximum_cut_cost_t, maximum_cut_cost_tag, maximum_cut_cost)
+  X(maximum_cut_cost_t, maximum_cut_cost_tag, maximum_cut_cost)                     \
+  X(tile_size_t, tile_size_tag, tile_size)                                           \
+  X(tile_margin_t, tile_margin_tag, tile_margin)
 
 #define CGAL_SHAPE_ANALYSIS_DECLARE_TAG(X, Y, Z) enum X { Y };
 CGAL_SHAPE_ANALYSIS_NAMED_PARAMETER_LIST(CGAL_SHAPE_ANALYSIS_DECLARE_TAG)

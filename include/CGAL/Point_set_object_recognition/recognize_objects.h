@@ -1,0 +1,322 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_POINT_SET_OBJECT_RECOGNITION_RECOGNIZE_OBJECTS_H
+#define CGAL_POINT_SET_OBJECT_RECOGNITION_RECOGNIZE_OBJECTS_H
+
+/// \file recognize_objects.h
+/// The whole chain (background removal, localization, segmentation) on a scan of any size, tile
+/// by tile: each tile is processed with the points of a margin around it, so that the memory of
+/// the grids and graphs is that of one tile.
+
+#include <CGAL/Point_set_3.h>
+
+#include <CGAL/Point_set_object_recognition/internal/Voxel_grid.h>
+#include <CGAL/Point_set_object_recognition/locate_objects.h>
+#include <CGAL/Point_set_object_recognition/remove_background.h>
+#include <CGAL/Point_set_object_recognition/segment_objects.h>
+#include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/parameters.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Point_set_object_recognition {
+
+/// \ingroup PkgPointSetObjectRecognitionRef
+/// A square tile of the horizontal plane processed by `recognize_objects()`.
+struct Scene_tile
+{
+  /// its own part of the plane: the points with `min[0] <= x < max[0]` and `min[1] <= y < max[1]`
+  /// (the last row and column of tiles also hold their upper border)
+  std::array<double, 2> min{{0, 0}}, max{{0, 0}};
+  std::size_t number_of_points = 0;    ///< the points it was processed with: its own and its margin's
+  std::size_t number_of_locations = 0; ///< the locations found in its own part
+  double seconds = 0;                  ///< the time its processing took
+};
+
+/// \ingroup PkgPointSetObjectRecognitionRef
+/// The result of `recognize_objects()`.
+struct Object_recognition_result
+{
+  std::vector<Object_location> locations;   ///< the objects found, tile after tile
+  std::vector<Object_segmentation> objects; ///< one per location; point indices into the input
+  /// Per input point, the location whose object holds it (when several do: the one horizontally
+  /// nearest to the point, the first at equal distances), or `no_object`.
+  std::vector<std::size_t> object_of_point;
+  static constexpr std::size_t no_object = std::size_t(-1); ///< see `object_of_point`
+  /// Per input point, what the background removal of its own tile made of it.
+  std::vector<Point_kind> kind;
+  std::vector<Scene_tile> tiles;   ///< the tiles that hold points, in the order processed
+  std::size_t largest_tile = 0;    ///< the most points a tile was processed with
+  double seconds = 0;              ///< the whole call
+};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+struct Recognition_options
+{
+  double tile = 100, margin = 10;
+  Background_options background;
+  Localization_options localization;
+  Segmentation_options segmentation;
+};
+
+// Tiles of side `side` from `lo`, `n` of them along each axis (the last one takes the border).
+struct Tile_grid
+{
+  std::array<double, 2> lo{{0, 0}};
+  double side = 1;
+  long nx = 1, ny = 1;
+
+  long column(double x) const { return (std::min)(nx - 1, (std::max)(0L, long(std::floor((x - lo[0]) / side)))); }
+  long row(double y) const { return (std::min)(ny - 1, (std::max)(0L, long(std::floor((y - lo[1]) / side)))); }
+  std::size_t tile(double x, double y) const { return std::size_t(row(y) * nx + column(x)); }
+};
+
+inline Object_recognition_result recognize_objects(const std::vector<P3>& p, const Recognition_options& o)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const auto since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
+  if(p.empty())
+    throw Bad_input("recognize_objects: the point cloud is empty");
+  if(p.size() >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
+    throw Bad_input("recognize_objects: too many points (at most 2^32 - 2)");
+  std::array<double, 2> lo{{p[0][0], p[0][1]}}, hi = lo;
+  for(const P3& q : p) {
+    if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
+      throw Bad_input("recognize_objects: a coordinate is not finite");
+    lo[0] = (std::min)(lo[0], q[0]), lo[1] = (std::min)(lo[1], q[1]);
+    hi[0] = (std::max)(hi[0], q[0]), hi[1] = (std::max)(hi[1], q[1]);
+  }
+  Tile_grid grid;
+  grid.lo = lo;
+  grid.side = o.tile;
+  const double nx = std::floor((hi[0] - lo[0]) / o.tile) + 1, ny = std::floor((hi[1] - lo[1]) / o.tile) + 1;
+  if(nx * ny > 1e8)
+    throw Bad_input("recognize_objects: more than 10^8 tiles (use a larger tile_size)");
+  grid.nx = long(nx), grid.ny = long(ny);
+
+  // The points by tile (a counting sort; within a tile, in input order).
+  const std::size_t n = p.size(), tiles = std::size_t(grid.nx * grid.ny);
+  std::vector<std::uint32_t> first(tiles + 1, 0), order(n);
+  {
+    std::vector<std::uint32_t> tile_of(n);
+    for(std::size_t i = 0; i < n; ++i)
+      ++first[(tile_of[i] = std::uint32_t(grid.tile(p[i][0], p[i][1]))) + 1];
+    for(std::size_t t = 0; t < tiles; ++t)
+      first[t + 1] += first[t];
+    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    for(std::size_t i = 0; i < n; ++i)
+      order[fill[tile_of[i]]++] = std::uint32_t(i);
+  }
+
+  Object_recognition_result r;
+  r.object_of_point.assign(n, Object_recognition_result::no_object);
+  r.kind.assign(n, Point_kind::GROUND);
+  const long reach = long(std::ceil(o.margin / o.tile));
+  std::vector<std::uint32_t> local;
+  std::vector<P3> q, kept, foreground;
+  for(long ty = 0; ty < grid.ny; ++ty)
+    for(long tx = 0; tx < grid.nx; ++tx) {
+      const std::size_t t = std::size_t(ty * grid.nx + tx);
+      if(first[t] == first[t + 1])
+        continue;
+      const auto tile_start = std::chrono::steady_clock::now();
+      Scene_tile tile;
+      tile.min = {{lo[0] + double(tx) * o.tile, lo[1] + double(ty) * o.tile}};
+      tile.max = {{tile.min[0] + o.tile, tile.min[1] + o.tile}};
+      // Its points and those of its margin, in input order.
+      local.clear();
+      for(long j = (std::max)(0L, ty - reach); j <= (std::min)(grid.ny - 1, ty + reach); ++j)
+        for(long i = (std::max)(0L, tx - reach); i <= (std::min)(grid.nx - 1, tx + reach); ++i) {
+          const std::size_t u = std::size_t(j * grid.nx + i);
+          for(std::uint32_t k = first[u]; k < first[u + 1]; ++k) {
+            const P3& a = p[order[k]];
+            if(a[0] >= tile.min[0] - o.margin && a[0] <= tile.max[0] + o.margin && a[1] >= tile.min[1] - o.margin &&
+               a[1] <= tile.max[1] + o.margin)
+              local.push_back(order[k]);
+          }
+        }
+      std::sort(local.begin(), local.end());
+      q.resize(local.size());
+      for(std::size_t k = 0; k < local.size(); ++k)
+        q[k] = p[local[k]];
+      tile.number_of_points = local.size();
+      r.largest_tile = (std::max)(r.largest_tile, local.size());
+
+      const Background_removal_result background = internal::remove_background(q, o.background);
+      for(std::size_t k = 0; k < local.size(); ++k)
+        if(grid.tile(q[k][0], q[k][1]) == t)
+          r.kind[local[k]] = background.kind[k];
+      foreground.resize(background.foreground.size());
+      for(std::size_t k = 0; k < foreground.size(); ++k)
+        foreground[k] = q[background.foreground[k]];
+      const Localization_result found = internal::locate_objects(foreground, o.localization);
+      std::vector<P3> own;
+      for(const Object_location& l : found.locations)
+        if(grid.tile(l.position[0], l.position[1]) == t) {
+          r.locations.push_back(l);
+          own.push_back(l.position);
+        }
+      tile.number_of_locations = own.size();
+      if(!own.empty()) {
+        const std::vector<std::size_t> above = points_above_ground(background);
+        kept.resize(above.size());
+        for(std::size_t k = 0; k < above.size(); ++k)
+          kept[k] = q[above[k]];
+        Segmentation_result s = internal::segment_objects(kept, own, o.segmentation);
+        for(Object_segmentation& object : s.objects) {
+          const std::size_t id = r.objects.size();
+          const P3& at = r.locations[id].position;
+          for(std::size_t& i : object.points) {
+            i = local[above[i]]; // increasing, as `above` and `local` are
+            std::size_t& claim = r.object_of_point[i];
+            if(claim == Object_recognition_result::no_object ||
+               horizontal_distance(p[i], at) < horizontal_distance(p[i], r.locations[claim].position))
+              claim = id;
+          }
+          if(object.seed != Object_segmentation::no_point)
+            object.seed = local[above[object.seed]];
+          r.objects.push_back(std::move(object));
+        }
+      }
+      tile.seconds = since(tile_start);
+      r.tiles.push_back(tile);
+    }
+  r.seconds = since(start);
+  return r;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+
+Finds and segments the objects of a scanned scene of any size: `remove_background()`, then
+`locate_objects()` among the foreground, then `segment_objects()` of the located objects among the
+points above the ground, as \cgalCite{Golovinskiy2010} (chapter 4) chains them, tile by tile.
+
+The horizontal plane is cut into square tiles of side `tile_size` from the corner of the points'
+bounding box. Each tile that holds points is processed on its own points and on those within
+`tile_margin` of it, and keeps the locations that fall in it: an object across a tile border is
+found once, by the tile that holds its location, and segmented with all its surroundings when the
+margin is wider than the object plus the reach of the segmentation (the largest background radius
+plus 2 m: 7 m for the automatic radius). The grids and graphs are those of one tile at a time:
+their memory does not grow with the scene, only the per-point results do; and localization by
+normalized cuts, whose time grows faster than the number of points, is applied to tiles of
+bounded size. The tiles are processed one after the other (each stage with `number_of_threads`),
+so the results are the same for any number of threads. Since a tile depends only on the points
+within its margin, separate processes (on a cluster) can each take a band of tiles and the points
+within `tile_margin` of the band.
+
+\tparam PointRange a model of `ConstRange` whose iterator type is `RandomAccessIterator`
+\tparam NamedParameters a sequence of named parameters
+
+\param points the whole scan (ground included), metres, \f$z\f$ up
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{point_map}
+    \cgalParamDescription{a property map associating points to the elements of `points`}
+    \cgalParamType{a model of `ReadablePropertyMap` whose value type is a point of a \cgal kernel}
+    \cgalParamDefault{`CGAL::Identity_property_map`}
+  \cgalParamNEnd
+  \cgalParamNBegin{tile_size}
+    \cgalParamDescription{the side of the tiles, in metres}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`100`}
+    \cgalParamExtra{must be positive; the whole scene is one tile when it is larger than the scene}
+  \cgalParamNEnd
+  \cgalParamNBegin{tile_margin}
+    \cgalParamDescription{the width of the band around a tile whose points it is processed with, in metres}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`10`}
+    \cgalParamExtra{must be zero or positive}
+  \cgalParamNEnd
+  \cgalParamNBegin{localization_method}
+    \cgalParamDescription{how `locate_objects()` groups the foreground points}
+    \cgalParamType{`Localization_method`}
+    \cgalParamDefault{`Localization_method::NORMALIZED_CUT` (the thesis' method)}
+  \cgalParamNEnd
+  \cgalParamNBegin{segmentation_method}
+    \cgalParamDescription{how `segment_objects()` separates each object}
+    \cgalParamType{`Segmentation_method`}
+    \cgalParamDefault{`Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS`}
+  \cgalParamNEnd
+  \cgalParamNBegin{background_radius}
+    \cgalParamDescription{the background radius of the segmentation methods other than the automatic one, in metres}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`2`}
+    \cgalParamExtra{must be positive}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the largest number of threads of each stage (0: TBB's choice)}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`0`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+The other parameters of the three stages take their defaults.
+
+\returns the locations, one segmentation per location, the object and the kind of every point,
+         and the tiles with their sizes and times
+
+\throws CGAL::Shape_analysis::Bad_input if the cloud is empty, a coordinate is not finite, a
+        parameter is out of its range, or the scene would have more than \f$10^8\f$ tiles
+*/
+template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+Object_recognition_result recognize_objects(const PointRange& points,
+                                            const NamedParameters& np = parameters::default_values())
+{
+  namespace SAI = CGAL::Shape_analysis::internal;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  internal::Recognition_options o;
+  o.tile = SAI::parameter_value<double>(np, snp::tile_size_tag, 100.0);
+  o.margin = SAI::parameter_value<double>(np, snp::tile_margin_tag, 10.0);
+  if(!(o.tile > 0) || !std::isfinite(o.tile))
+    throw Bad_input("recognize_objects: tile_size must be a positive number");
+  if(!(o.margin >= 0) || !std::isfinite(o.margin))
+    throw Bad_input("recognize_objects: tile_margin must be zero or a positive number");
+  const std::size_t threads = SAI::parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
+  o.localization.method = SAI::parameter_value<Localization_method>(np, snp::localization_method_tag,
+                                                                    Localization_method::NORMALIZED_CUT);
+  o.localization.threads = threads;
+  o.segmentation = internal::segmentation_options(
+    parameters::segmentation_method(SAI::parameter_value<Segmentation_method>(
+                                      np, snp::segmentation_method_tag, Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS))
+      .background_radius(SAI::parameter_value<double>(np, snp::background_radius_tag, 2.0))
+      .number_of_threads(threads),
+    "recognize_objects");
+  return internal::recognize_objects(internal::point_arrays(points, np), o);
+}
+
+/// \ingroup PkgPointSetObjectRecognitionRef
+/// `recognize_objects()` of the points of a `CGAL::Point_set_3` (its point map).
+/// \tparam Point the point type of the point set
+/// \tparam Vector the normal type of the point set
+/// \tparam NamedParameters a sequence of named parameters
+/// \param point_set the whole scan
+/// \param np the same named parameters as the other overload, but `point_map`
+/// \returns as the other overload; point indices follow the point set's iteration order
+template <typename Point, typename Vector, typename NamedParameters = parameters::Default_named_parameters>
+Object_recognition_result recognize_objects(const CGAL::Point_set_3<Point, Vector>& point_set,
+                                            const NamedParameters& np = parameters::default_values())
+{
+  return recognize_objects(internal::points_of(point_set), np);
+}
+
+} // namespace Point_set_object_recognition
+} // namespace CGAL
+
+#endif // CGAL_POINT_SET_OBJECT_RECOGNITION_RECOGNIZE_OBJECTS_H
