@@ -31,6 +31,9 @@
 #include <CGAL/Shape_analysis/internal/Json.h>
 #include <CGAL/Shape_analysis/internal/Parallel.h>
 
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
@@ -96,8 +99,8 @@ Json time_partition_function(const Mesh& mesh, RC::Sampling_method method, std::
 
 // The minimum cuts of `samples` min-cut samples (random face pairs, penalties of part size 0.05)
 // on the dual graph of `mesh`, solved on one thread by our Boykov-Kolmogorov (no terminal arcs,
-// buffers reused) and by Boost's boykov_kolmogorov_max_flow through a graph with terminal arcs
-// (the source and sink faces tied to the terminals by infinite arcs). Distances and capacities
+// buffers reused) and by Boost's boykov_kolmogorov_max_flow on an adjacency list of the same
+// arcs (between the two faces themselves). Distances and capacities
 // are computed once, outside the timings; the two flows must agree.
 Json compare_max_flows(const Mesh& mesh, std::size_t samples)
 {
@@ -138,17 +141,31 @@ Json compare_max_flows(const Mesh& mesh, std::size_t samples)
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start_ours).count();
   const auto start_boost = std::chrono::steady_clock::now();
   {
-    SAI::Min_cut_solver solver(n);
-    for(std::size_t e = 0; e < m; ++e)
-      solver.add_edge(g.edge_source[e], g.edge_target[e]);
-    solver.finalize();
+    // Boost's Boykov-Kolmogorov on an adjacency list: one arc each way per edge, built once.
+    typedef boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS> Traits;
+    typedef boost::adjacency_list<
+      boost::vecS, boost::vecS, boost::directedS,
+      boost::property<boost::vertex_color_t, boost::default_color_type,
+                      boost::property<boost::vertex_distance_t, long,
+                                      boost::property<boost::vertex_predecessor_t, Traits::edge_descriptor>>>,
+      boost::property<boost::edge_capacity_t, double,
+                      boost::property<boost::edge_residual_capacity_t, double,
+                                      boost::property<boost::edge_reverse_t, Traits::edge_descriptor>>>>
+      Bk_graph;
+    Bk_graph bg(n);
+    auto cap = get(boost::edge_capacity, bg);
+    auto rev = get(boost::edge_reverse, bg);
+    std::vector<std::pair<Traits::edge_descriptor, Traits::edge_descriptor>> arcs(m);
+    for(std::size_t e = 0; e < m; ++e) {
+      const auto a = boost::add_edge(g.edge_source[e], g.edge_target[e], bg).first;
+      const auto b = boost::add_edge(g.edge_target[e], g.edge_source[e], bg).first;
+      rev[a] = b, rev[b] = a;
+      arcs[e] = {a, b};
+    }
     for(std::size_t i = 0; i < samples; ++i) {
       for(std::size_t e = 0; e < m; ++e)
-        solver.set_edge_capacity(e, capacity[i][e], capacity[i][e]);
-      solver.clear_terminals();
-      solver.constrain(pair[i].first, SAI::Min_cut_solver::SOURCE);
-      solver.constrain(pair[i].second, SAI::Min_cut_solver::SINK);
-      boost_flow[i] = solver.solve();
+        cap[arcs[e].first] = cap[arcs[e].second] = capacity[i][e];
+      boost_flow[i] = boost::boykov_kolmogorov_max_flow(bg, boost::vertex(pair[i].first, bg), boost::vertex(pair[i].second, bg));
     }
   }
   const double boost_seconds =

@@ -477,6 +477,13 @@ TEST(Segmentation, RecognitionSameForAnyThreadCount)
     EXPECT_EQ(one.objects[k].points, two.objects[k].points);
   }
   EXPECT_EQ(one.object_of_point, two.object_of_point);
+  // The same from a CGAL::Point_set_3.
+  CGAL::Point_set_3<Point> ps;
+  for(const Point& p : w.points)
+    ps.insert(p);
+  const auto set = PSOR::recognize_objects(ps, PSOR::parameters::tile_size(50.0).number_of_threads(1));
+  EXPECT_EQ(set.object_of_point, one.object_of_point);
+  EXPECT_EQ(set.locations.size(), one.locations.size());
 }
 
 TEST(Segmentation, RecognitionBadInput)

@@ -24,6 +24,9 @@
 #include <CGAL/Shape_analysis/internal/Procedural_shapes.h>
 #include <CGAL/Shape_analysis/internal/Shortest_paths.h>
 
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/push_relabel_max_flow.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -384,20 +387,17 @@ TEST(DualGraph, ProceduralCreasesAreCheapAndSizesSumToArea)
   // 3.3): with alpha = 10 it costs a small fraction of that length, with alpha = 0 (no concavity
   // weighting) about the length itself.
   auto separation_cost = [&](const SAI::Dual_graph& graph) {
-    SAI::Min_cut_solver solver(graph.number_of_nodes());
+    SAI::Terminal_min_cut solver(graph.number_of_nodes());
     for(std::size_t e = 0; e < graph.number_of_edges(); ++e)
-      solver.add_edge(graph.edge_source[e], graph.edge_target[e]);
-    solver.finalize();
-    for(std::size_t e = 0; e < graph.number_of_edges(); ++e)
-      solver.set_edge_capacity(e, graph.cut_cost[e], graph.cut_cost[e]);
+      solver.add_edge(graph.edge_source[e], graph.edge_target[e], graph.cut_cost[e]);
     std::size_t sources = 0, sinks = 0;
     for(std::size_t f = 0; f < graph.number_of_nodes(); ++f) {
       const double x = graph.node_position[f].x;
       if(x < -1.6) {
-        solver.constrain(f, SAI::Min_cut_solver::SOURCE);
+        solver.constrain(f, SAI::Terminal_min_cut::SOURCE);
         ++sources;
       } else if(x > -0.3) {
-        solver.constrain(f, SAI::Min_cut_solver::SINK);
+        solver.constrain(f, SAI::Terminal_min_cut::SINK);
         ++sinks;
       }
     }
@@ -455,16 +455,16 @@ struct Cut_problem
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   std::vector<std::pair<double, double>> capacity;
   std::vector<double> to_source, to_sink;
-  std::vector<SAI::Min_cut_solver::Constraint> constraint;
+  std::vector<SAI::Terminal_min_cut::Side> constraint;
 
   // Cost of a side assignment (true: source side); infinity if a constraint is violated.
   double cost(const std::vector<bool>& s) const
   {
     double c = 0;
     for(std::size_t u = 0; u < n; ++u) {
-      if(constraint[u] == SAI::Min_cut_solver::SOURCE && !s[u])
+      if(constraint[u] == SAI::Terminal_min_cut::SOURCE && !s[u])
         return std::numeric_limits<double>::infinity();
-      if(constraint[u] == SAI::Min_cut_solver::SINK && s[u])
+      if(constraint[u] == SAI::Terminal_min_cut::SINK && s[u])
         return std::numeric_limits<double>::infinity();
       c += s[u] ? to_sink[u] : to_source[u];
     }
@@ -499,7 +499,7 @@ struct Cut_problem
     }
     to_source.assign(n, 0.0);
     to_sink.assign(n, 0.0);
-    constraint.assign(n, SAI::Min_cut_solver::FREE);
+    constraint.assign(n, SAI::Terminal_min_cut::FREE);
     for(std::size_t u = 0; u < n; ++u) {
       if(rng.uniform() < 0.6)
         to_source[u] = rng.uniform(0, 3);
@@ -507,13 +507,13 @@ struct Cut_problem
         to_sink[u] = rng.uniform(0, 3);
       if(with_constraints) {
         const double r = rng.uniform();
-        constraint[u] = r < 0.15 ? SAI::Min_cut_solver::SOURCE
-                                 : (r < 0.3 ? SAI::Min_cut_solver::SINK : SAI::Min_cut_solver::FREE);
+        constraint[u] = r < 0.15 ? SAI::Terminal_min_cut::SOURCE
+                                 : (r < 0.3 ? SAI::Terminal_min_cut::SINK : SAI::Terminal_min_cut::FREE);
       }
     }
   }
 
-  void load(SAI::Min_cut_solver& solver) const
+  void load(SAI::Terminal_min_cut& solver) const
   {
     for(std::size_t p = 0; p < pairs.size(); ++p)
       solver.set_edge_capacity(p, capacity[p].first, capacity[p].second);
@@ -523,7 +523,7 @@ struct Cut_problem
     }
   }
 
-  void check(SAI::Min_cut_solver& solver, const std::string& what) const
+  void check(SAI::Terminal_min_cut& solver, const std::string& what) const
   {
     const double flow = solver.solve();
     const double best = brute_force();
@@ -545,10 +545,9 @@ TEST(MinCut, MatchesBruteForceOnRandomGraphsWithReuse)
       for(std::size_t v = u + 1; v < problem.n; ++v)
         if(rng.uniform() < 0.45)
           problem.pairs.emplace_back(rng.uniform() < 0.5 ? std::make_pair(u, v) : std::make_pair(v, u));
-    SAI::Min_cut_solver solver(problem.n);
+    SAI::Terminal_min_cut solver(problem.n);
     for(const auto& p : problem.pairs)
-      solver.add_edge(p.first, p.second);
-    solver.finalize();
+      solver.add_edge(p.first, p.second, 0.0);
     // The same topology solved several times with new capacities and constraints.
     for(int round = 0; round < 6; ++round) {
       problem.randomize_capacities(rng, round % 2 == 1);
@@ -561,20 +560,60 @@ TEST(MinCut, MatchesBruteForceOnRandomGraphsWithReuse)
   }
 }
 
+TEST(MinCut, ConstraintsAddedAfterASolveAugmentTheFlow)
+{
+  // Solved without constraints, then constraints added two at a time (only capacities that
+  // grow): the re-solve by augmentation matches brute force every time, and a constraint that
+  // contradicts an earlier one falls back to a full solve that matches too.
+  for(std::uint64_t seed = 1; seed <= 40; ++seed) {
+    SAI::Procedural_random rng(100 + seed);
+    Cut_problem problem;
+    problem.n = 3 + rng.index(8); // 3..10 nodes
+    for(std::size_t u = 0; u < problem.n; ++u)
+      for(std::size_t v = u + 1; v < problem.n; ++v)
+        if(rng.uniform() < 0.5)
+          problem.pairs.emplace_back(u, v);
+    problem.randomize_capacities(rng, false);
+    SAI::Terminal_min_cut solver(problem.n);
+    for(std::size_t p = 0; p < problem.pairs.size(); ++p)
+      solver.add_edge(problem.pairs[p].first, problem.pairs[p].second, problem.capacity[p].first,
+                      problem.capacity[p].second);
+    for(std::size_t u = 0; u < problem.n; ++u)
+      solver.set_terminal_capacity(u, problem.to_source[u], problem.to_sink[u]);
+    problem.check(solver, "seed " + std::to_string(seed) + " unconstrained");
+    for(int round = 0; round < 3; ++round) {
+      std::vector<std::pair<std::size_t, SAI::Terminal_min_cut::Side>> added;
+      for(int k = 0; k < 2; ++k) {
+        const std::size_t u = rng.index(problem.n);
+        const SAI::Terminal_min_cut::Side side =
+          rng.uniform() < 0.5 ? SAI::Terminal_min_cut::SOURCE : SAI::Terminal_min_cut::SINK;
+        added.emplace_back(u, side);
+        problem.constraint[u] = side;
+      }
+      const double value = solver.constrain_and_resolve(added);
+      const double best = problem.brute_force();
+      const std::string what = "seed " + std::to_string(seed) + " round " + std::to_string(round);
+      EXPECT_NEAR(value, best, 1e-9 * (1 + best)) << what;
+      std::vector<bool> side(problem.n);
+      for(std::size_t u = 0; u < problem.n; ++u)
+        side[u] = solver.is_source_side(u);
+      EXPECT_NEAR(problem.cost(side), best, 1e-9 * (1 + best)) << what << ": the sides realize the cut";
+    }
+  }
+}
+
 TEST(MinCut, HardConstraintsWinOverExpensiveCuts)
 {
   // A chain 0-1-2-3 with expensive links; node 0 prefers the sink strongly and node 3 the source,
   // but the constraints put 0 on the source side and 3 on the sink side.
-  SAI::Min_cut_solver solver(4);
-  for(std::size_t u = 0; u + 1 < 4; ++u)
-    solver.add_edge(u, u + 1);
+  SAI::Terminal_min_cut solver(4);
   const double link[3] = {5, 1.5, 7};
-  for(std::size_t p = 0; p < 3; ++p)
-    solver.set_edge_capacity(p, link[p], link[p]);
+  for(std::size_t u = 0; u + 1 < 4; ++u)
+    solver.add_edge(u, u + 1, link[u]);
   solver.set_terminal_capacity(0, 0, 100);
   solver.set_terminal_capacity(3, 100, 0);
-  solver.constrain(0, SAI::Min_cut_solver::SOURCE);
-  solver.constrain(3, SAI::Min_cut_solver::SINK);
+  solver.constrain(0, SAI::Terminal_min_cut::SOURCE);
+  solver.constrain(3, SAI::Terminal_min_cut::SINK);
   const double flow = solver.solve();
   EXPECT_TRUE(solver.is_source_side(0));
   EXPECT_FALSE(solver.is_source_side(3));
@@ -584,8 +623,8 @@ TEST(MinCut, HardConstraintsWinOverExpensiveCuts)
   EXPECT_FALSE(solver.is_source_side(2));
 
   // Reversed constraints on the same solver.
-  solver.constrain(0, SAI::Min_cut_solver::SINK);
-  solver.constrain(3, SAI::Min_cut_solver::SOURCE);
+  solver.constrain(0, SAI::Terminal_min_cut::SINK);
+  solver.constrain(3, SAI::Terminal_min_cut::SOURCE);
   solver.set_terminal_capacity(0, 0, 0);
   solver.set_terminal_capacity(3, 0, 0);
   EXPECT_NEAR(solver.solve(), 1.5, 1e-9);
@@ -598,9 +637,8 @@ TEST(MinCut, HardConstraintsWinOverExpensiveCuts)
 TEST(MinCut, AsymmetricCapacitiesAndReset)
 {
   // Two nodes, source prefers 0, sink prefers 1: the arc 0->1 is cut, its reverse is not.
-  SAI::Min_cut_solver solver(2);
-  solver.add_edge(0, 1);
-  solver.set_edge_capacity(0, 0.25, 9.0);
+  SAI::Terminal_min_cut solver(2);
+  solver.add_edge(0, 1, 0.25, 9.0);
   solver.set_terminal_capacity(0, 10, 0);
   solver.set_terminal_capacity(1, 0, 10);
   EXPECT_NEAR(solver.solve(), 0.25, 1e-12);
@@ -626,9 +664,8 @@ TEST(MinCut, AsymmetricCapacitiesAndReset)
 
 TEST(MinCut, RejectsBadCapacities)
 {
-  SAI::Min_cut_solver solver(2);
-  solver.add_edge(0, 1);
-  solver.set_edge_capacity(0, -1.0, 1.0);
+  SAI::Terminal_min_cut solver(2);
+  solver.add_edge(0, 1, -1.0, 1.0);
   EXPECT_THROW(solver.solve(), SA::Bad_input);
   solver.set_edge_capacity(0, 1.0, 1.0);
   solver.set_terminal_capacity(1, std::numeric_limits<double>::quiet_NaN(), 0);
@@ -1543,11 +1580,33 @@ TEST(MaxFlow, MatchesBruteForceOnRandomDirectedGraphs)
   }
 }
 
+// The maximum flow from s to t of an undirected graph (capacity c both ways) by Boost's
+// push-relabel: a reference computed by another algorithm and another implementation.
+double boost_push_relabel_flow(std::size_t n, const std::vector<std::uint32_t>& from, const std::vector<std::uint32_t>& to,
+                               const std::vector<double>& capacity, std::size_t s, std::size_t t)
+{
+  typedef boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS> Traits;
+  typedef boost::adjacency_list<
+    boost::vecS, boost::vecS, boost::directedS, boost::no_property,
+    boost::property<boost::edge_capacity_t, double,
+                    boost::property<boost::edge_residual_capacity_t, double,
+                                    boost::property<boost::edge_reverse_t, Traits::edge_descriptor>>>>
+    Graph;
+  Graph g(n);
+  auto cap = get(boost::edge_capacity, g);
+  auto rev = get(boost::edge_reverse, g);
+  for(std::size_t e = 0; e < from.size(); ++e) {
+    const auto a = boost::add_edge(from[e], to[e], g).first, b = boost::add_edge(to[e], from[e], g).first;
+    cap[a] = cap[b] = capacity[e];
+    rev[a] = b, rev[b] = a;
+  }
+  return boost::push_relabel_max_flow(g, boost::vertex(s, g), boost::vertex(t, g));
+}
+
 TEST(MaxFlow, AgreesWithBoostOnAMeshDualGraph)
 {
   // Many cuts on the dual graph of a real shape, with random capacities: the flow value of our
-  // solver equals the one of Boost's Boykov-Kolmogorov (through Min_cut_solver with two hard
-  // constraints), and its sides realize it.
+  // solver equals the one of Boost's push-relabel, and its sides realize it.
   const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::three_sphere_chain(), 0.3);
   Mesh m;
   SAI::fill_polygon_mesh(lm, m);
@@ -1555,25 +1614,16 @@ TEST(MaxFlow, AgreesWithBoostOnAMeshDualGraph)
   SAI::build_dual_graph(m, get(CGAL::vertex_point, m), get(CGAL::face_index, m), 10.0, g);
   SAI::Dual_graph_min_cut ours(g);
   SAI::Dual_graph_min_cut::Workspace w;
-  SAI::Min_cut_solver boost_solver(g.number_of_nodes());
-  for(std::size_t e = 0; e < g.number_of_edges(); ++e)
-    boost_solver.add_edge(g.edge_source[e], g.edge_target[e]);
-  boost_solver.finalize();
   SAI::Procedural_random rng(11);
   std::vector<double> capacity(g.number_of_edges());
   for(int round = 0; round < 25; ++round) {
     for(double& c : capacity)
       c = round % 2 == 0 ? rng.uniform(0, 1) : std::pow(rng.uniform(), 8.0);
-    for(std::size_t e = 0; e < capacity.size(); ++e)
-      boost_solver.set_edge_capacity(e, capacity[e], capacity[e]);
     const std::size_t s = rng.index(g.number_of_nodes());
     std::size_t t = rng.index(g.number_of_nodes());
     if(t == s)
       t = (s + 1) % g.number_of_nodes();
-    boost_solver.clear_terminals();
-    boost_solver.constrain(s, SAI::Min_cut_solver::SOURCE);
-    boost_solver.constrain(t, SAI::Min_cut_solver::SINK);
-    const double expected = boost_solver.solve();
+    const double expected = boost_push_relabel_flow(g.number_of_nodes(), g.edge_source, g.edge_target, capacity, s, t);
     const double value = ours.solve(capacity, s, t, w);
     EXPECT_NEAR(value, expected, 1e-9 * (1 + expected)) << "round " << round;
     double across = 0;

@@ -11,7 +11,6 @@
 
 #include <CGAL/Point_set_3.h>
 
-#include <CGAL/Point_set_object_recognition/internal/Voxel_grid.h>
 #include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
 #include <CGAL/Point_set_object_recognition/segment_objects.h>
@@ -23,6 +22,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -81,18 +81,22 @@ struct Tile_grid
   std::size_t tile(double x, double y) const { return std::size_t(row(y) * nx + column(x)); }
 };
 
-inline Object_recognition_result recognize_objects(const std::vector<P3>& p, const Recognition_options& o)
+// `point(i)` gives the coordinates of point i < n, read as the tiles need them (no copy of the
+// whole cloud).
+template <typename PointAt>
+Object_recognition_result recognize_objects(std::size_t n, const PointAt& point, const Recognition_options& o)
 {
   const auto start = std::chrono::steady_clock::now();
   const auto since = [](std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   };
-  if(p.empty())
+  if(n == 0)
     throw Bad_input("recognize_objects: the point cloud is empty");
-  if(p.size() >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
+  if(n >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
     throw Bad_input("recognize_objects: too many points (at most 2^32 - 2)");
-  std::array<double, 2> lo{{p[0][0], p[0][1]}}, hi = lo;
-  for(const P3& q : p) {
+  std::array<double, 2> lo{{point(0)[0], point(0)[1]}}, hi = lo;
+  for(std::size_t i = 0; i < n; ++i) {
+    const P3 q = point(i);
     if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
       throw Bad_input("recognize_objects: a coordinate is not finite");
     lo[0] = (std::min)(lo[0], q[0]), lo[1] = (std::min)(lo[1], q[1]);
@@ -107,12 +111,14 @@ inline Object_recognition_result recognize_objects(const std::vector<P3>& p, con
   grid.nx = long(nx), grid.ny = long(ny);
 
   // The points by tile (a counting sort; within a tile, in input order).
-  const std::size_t n = p.size(), tiles = std::size_t(grid.nx * grid.ny);
+  const std::size_t tiles = std::size_t(grid.nx * grid.ny);
   std::vector<std::uint32_t> first(tiles + 1, 0), order(n);
   {
     std::vector<std::uint32_t> tile_of(n);
-    for(std::size_t i = 0; i < n; ++i)
-      ++first[(tile_of[i] = std::uint32_t(grid.tile(p[i][0], p[i][1]))) + 1];
+    for(std::size_t i = 0; i < n; ++i) {
+      const P3 q = point(i);
+      ++first[(tile_of[i] = std::uint32_t(grid.tile(q[0], q[1]))) + 1];
+    }
     for(std::size_t t = 0; t < tiles; ++t)
       first[t + 1] += first[t];
     std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
@@ -141,7 +147,7 @@ inline Object_recognition_result recognize_objects(const std::vector<P3>& p, con
         for(long i = (std::max)(0L, tx - reach); i <= (std::min)(grid.nx - 1, tx + reach); ++i) {
           const std::size_t u = std::size_t(j * grid.nx + i);
           for(std::uint32_t k = first[u]; k < first[u + 1]; ++k) {
-            const P3& a = p[order[k]];
+            const P3 a = point(order[k]);
             if(a[0] >= tile.min[0] - o.margin && a[0] <= tile.max[0] + o.margin && a[1] >= tile.min[1] - o.margin &&
                a[1] <= tile.max[1] + o.margin)
               local.push_back(order[k]);
@@ -150,7 +156,7 @@ inline Object_recognition_result recognize_objects(const std::vector<P3>& p, con
       std::sort(local.begin(), local.end());
       q.resize(local.size());
       for(std::size_t k = 0; k < local.size(); ++k)
-        q[k] = p[local[k]];
+        q[k] = point(local[k]);
       tile.number_of_points = local.size();
       r.largest_tile = (std::max)(r.largest_tile, local.size());
 
@@ -179,10 +185,11 @@ inline Object_recognition_result recognize_objects(const std::vector<P3>& p, con
           const std::size_t id = r.objects.size();
           const P3& at = r.locations[id].position;
           for(std::size_t& i : object.points) {
+            const P3& a = kept[i];
             i = local[above[i]]; // increasing, as `above` and `local` are
             std::size_t& claim = r.object_of_point[i];
             if(claim == Object_recognition_result::no_object ||
-               horizontal_distance(p[i], at) < horizontal_distance(p[i], r.locations[claim].position))
+               horizontal_distance(a, at) < horizontal_distance(a, r.locations[claim].position))
               claim = id;
           }
           if(object.seed != Object_segmentation::no_point)
@@ -195,6 +202,31 @@ inline Object_recognition_result recognize_objects(const std::vector<P3>& p, con
     }
   r.seconds = since(start);
   return r;
+}
+
+template <typename NamedParameters>
+Recognition_options recognition_options(const NamedParameters& np)
+{
+  namespace SAI = CGAL::Shape_analysis::internal;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  Recognition_options o;
+  o.tile = SAI::parameter_value<double>(np, snp::tile_size_tag, 100.0);
+  o.margin = SAI::parameter_value<double>(np, snp::tile_margin_tag, 10.0);
+  if(!(o.tile > 0) || !std::isfinite(o.tile))
+    throw Bad_input("recognize_objects: tile_size must be a positive number");
+  if(!(o.margin >= 0) || !std::isfinite(o.margin))
+    throw Bad_input("recognize_objects: tile_margin must be zero or a positive number");
+  const std::size_t threads = SAI::parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
+  o.localization.method = SAI::parameter_value<Localization_method>(np, snp::localization_method_tag,
+                                                                    Localization_method::NORMALIZED_CUT);
+  o.localization.threads = threads;
+  o.segmentation = segmentation_options(
+    parameters::segmentation_method(SAI::parameter_value<Segmentation_method>(
+                                      np, snp::segmentation_method_tag, Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS))
+      .background_radius(SAI::parameter_value<double>(np, snp::background_radius_tag, 2.0))
+      .number_of_threads(threads),
+    "recognize_objects");
+  return o;
 }
 
 } // namespace internal
@@ -217,8 +249,9 @@ their memory does not grow with the scene, only the per-point results do; and lo
 normalized cuts, whose time grows faster than the number of points, is applied to tiles of
 bounded size. The tiles are processed one after the other (each stage with `number_of_threads`),
 so the results are the same for any number of threads. Since a tile depends only on the points
-within its margin, separate processes (on a cluster) can each take a band of tiles and the points
-within `tile_margin` of the band.
+within its margin, separate processes (on a cluster) can each be given the points of a band of
+the scene plus those within `tile_margin` of it, and keep the locations (with their objects) that
+fall inside their band.
 
 \tparam PointRange a model of `ConstRange` whose iterator type is `RandomAccessIterator`
 \tparam NamedParameters a sequence of named parameters
@@ -279,26 +312,15 @@ template <typename PointRange, typename NamedParameters = parameters::Default_na
 Object_recognition_result recognize_objects(const PointRange& points,
                                             const NamedParameters& np = parameters::default_values())
 {
-  namespace SAI = CGAL::Shape_analysis::internal;
-  namespace snp = CGAL::Shape_analysis::internal_np;
-  internal::Recognition_options o;
-  o.tile = SAI::parameter_value<double>(np, snp::tile_size_tag, 100.0);
-  o.margin = SAI::parameter_value<double>(np, snp::tile_margin_tag, 10.0);
-  if(!(o.tile > 0) || !std::isfinite(o.tile))
-    throw Bad_input("recognize_objects: tile_size must be a positive number");
-  if(!(o.margin >= 0) || !std::isfinite(o.margin))
-    throw Bad_input("recognize_objects: tile_margin must be zero or a positive number");
-  const std::size_t threads = SAI::parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
-  o.localization.method = SAI::parameter_value<Localization_method>(np, snp::localization_method_tag,
-                                                                    Localization_method::NORMALIZED_CUT);
-  o.localization.threads = threads;
-  o.segmentation = internal::segmentation_options(
-    parameters::segmentation_method(SAI::parameter_value<Segmentation_method>(
-                                      np, snp::segmentation_method_tag, Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS))
-      .background_radius(SAI::parameter_value<double>(np, snp::background_radius_tag, 2.0))
-      .number_of_threads(threads),
-    "recognize_objects");
-  return internal::recognize_objects(internal::point_arrays(points, np), o);
+  const internal::Recognition_options o = internal::recognition_options(np);
+  typedef typename std::iterator_traits<typename PointRange::const_iterator>::value_type Value;
+  const auto point_map = CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, CGAL::internal_np::point_map), CGAL::Identity_property_map<Value>());
+  const auto begin = std::begin(points);
+  return internal::recognize_objects(std::size_t(std::distance(begin, std::end(points))), [&](std::size_t i) {
+    const auto& q = get(point_map, *(begin + std::ptrdiff_t(i)));
+    return internal::P3{{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+  }, o);
 }
 
 /// \ingroup PkgPointSetObjectRecognitionRef
@@ -313,7 +335,12 @@ template <typename Point, typename Vector, typename NamedParameters = parameters
 Object_recognition_result recognize_objects(const CGAL::Point_set_3<Point, Vector>& point_set,
                                             const NamedParameters& np = parameters::default_values())
 {
-  return recognize_objects(internal::points_of(point_set), np);
+  const internal::Recognition_options o = internal::recognition_options(np);
+  const auto begin = point_set.begin();
+  return internal::recognize_objects(point_set.size(), [&](std::size_t i) {
+    const Point& q = point_set.point(*(begin + std::ptrdiff_t(i)));
+    return internal::P3{{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+  }, o);
 }
 
 } // namespace Point_set_object_recognition

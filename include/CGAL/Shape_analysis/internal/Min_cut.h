@@ -4,17 +4,14 @@
 #ifndef CGAL_SHAPE_ANALYSIS_INTERNAL_MIN_CUT_H
 #define CGAL_SHAPE_ANALYSIS_INTERNAL_MIN_CUT_H
 
-// s-t minimum cut with terminal (unary) capacities and hard constraints, on Boost's
-// Boykov-Kolmogorov max-flow. The graph topology is built once (`add_edge` ... `finalize`);
-// capacities can then be changed and the cut solved again many times without reallocating the
-// graph or its property arrays (randomized min-cuts solve hundreds of cuts on one dual graph).
+// s-t minimum cuts on the project's Boykov-Kolmogorov max-flow (Max_flow.h): between two nodes
+// of a Dual_graph (randomized cuts), and with terminal (unary) capacities and hard constraints
+// (point-cloud segmentation). In both, the topology is built once and capacities can change
+// between solves without reallocating it.
 
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/internal/Dual_graph.h>
 #include <CGAL/Shape_analysis/internal/Max_flow.h>
-
-#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
-#include <boost/graph/compressed_sparse_row_graph.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -27,185 +24,6 @@
 namespace CGAL {
 namespace Shape_analysis {
 namespace internal {
-
-class Min_cut_solver
-{
-  typedef boost::compressed_sparse_row_graph<boost::directedS> Graph;
-  typedef boost::graph_traits<Graph>::edge_descriptor Arc;
-  typedef boost::graph_traits<Graph>::vertex_descriptor Vertex;
-
-public:
-  enum Constraint : char { FREE = 0, SOURCE = 1, SINK = 2 };
-
-  explicit Min_cut_solver(std::size_t number_of_nodes = 0) { reset(number_of_nodes); }
-
-  // Forgets everything; the graph will have `number_of_nodes` nodes plus the two terminals.
-  void reset(std::size_t number_of_nodes)
-  {
-    m_n = number_of_nodes;
-    m_pairs.clear();
-    m_finalized = false;
-    m_pair_capacity.clear();
-    m_to_source.assign(m_n, 0.0);
-    m_to_sink.assign(m_n, 0.0);
-    m_constraint.assign(m_n, FREE);
-  }
-
-  std::size_t number_of_nodes() const { return m_n; }
-
-  // Declares an undirected pair u-v (before finalize()); returns its id.
-  std::size_t add_edge(std::size_t u, std::size_t v)
-  {
-    m_pairs.emplace_back(static_cast<std::uint32_t>(u), static_cast<std::uint32_t>(v));
-    m_pair_capacity.emplace_back(0.0, 0.0);
-    return m_pairs.size() - 1;
-  }
-
-  // Builds the graph: every pair gives two opposite arcs, every node an arc from the source and
-  // an arc to the sink (each with its zero-capacity reverse).
-  void finalize()
-  {
-    const std::uint32_t s = static_cast<std::uint32_t>(m_n), t = s + 1;
-    struct Directed { std::uint32_t from, to; std::size_t slot; };
-    std::vector<Directed> arcs;
-    arcs.reserve(2 * m_pairs.size() + 4 * m_n);
-    // slots: 2p, 2p+1 for pair p (u->v, v->u); then for node i: base + 4i .. base + 4i + 3 for
-    // s->i, i->s, i->t, t->i.
-    for(std::size_t p = 0; p < m_pairs.size(); ++p) {
-      arcs.push_back({m_pairs[p].first, m_pairs[p].second, 2 * p});
-      arcs.push_back({m_pairs[p].second, m_pairs[p].first, 2 * p + 1});
-    }
-    const std::size_t base = 2 * m_pairs.size();
-    for(std::uint32_t i = 0; i < m_n; ++i) {
-      arcs.push_back({s, i, base + 4 * std::size_t(i)});
-      arcs.push_back({i, s, base + 4 * std::size_t(i) + 1});
-      arcs.push_back({i, t, base + 4 * std::size_t(i) + 2});
-      arcs.push_back({t, i, base + 4 * std::size_t(i) + 3});
-    }
-    std::stable_sort(arcs.begin(), arcs.end(),
-                     [](const Directed& a, const Directed& b) { return a.from < b.from; });
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> sorted(arcs.size());
-    m_slot_to_arc.assign(arcs.size(), 0);
-    for(std::size_t k = 0; k < arcs.size(); ++k) {
-      sorted[k] = {arcs[k].from, arcs[k].to};
-      m_slot_to_arc[arcs[k].slot] = k;
-    }
-    m_graph = Graph(boost::edges_are_sorted, sorted.begin(), sorted.end(), m_n + 2);
-    m_arcs.assign(arcs.size(), Arc());
-    auto edge_range = boost::edges(m_graph);
-    for(auto it = edge_range.first; it != edge_range.second; ++it)
-      m_arcs[get(boost::edge_index, m_graph, *it)] = *it;
-    m_reverse.assign(arcs.size(), Arc());
-    auto pair_arcs = [&](std::size_t slot_a, std::size_t slot_b) {
-      const std::size_t a = m_slot_to_arc[slot_a], b = m_slot_to_arc[slot_b];
-      m_reverse[a] = m_arcs[b];
-      m_reverse[b] = m_arcs[a];
-    };
-    for(std::size_t p = 0; p < m_pairs.size(); ++p)
-      pair_arcs(2 * p, 2 * p + 1);
-    for(std::size_t i = 0; i < m_n; ++i) {
-      pair_arcs(base + 4 * i, base + 4 * i + 1);
-      pair_arcs(base + 4 * i + 2, base + 4 * i + 3);
-    }
-    m_capacity.assign(arcs.size(), 0.0);
-    m_residual.assign(arcs.size(), 0.0);
-    m_color.assign(m_n + 2, boost::white_color);
-    m_predecessor.assign(m_n + 2, Arc());
-    m_distance.assign(m_n + 2, 0);
-    m_finalized = true;
-  }
-
-  // Capacity of the pair's arcs u->v and v->u (non-negative, finite).
-  void set_edge_capacity(std::size_t pair, double cap_uv, double cap_vu)
-  {
-    m_pair_capacity[pair] = {cap_uv, cap_vu};
-  }
-
-  // Terminal capacities of node u: cost of putting u on the sink side (`to_source`, the source->u
-  // arc) and on the source side (`to_sink`, the u->sink arc).
-  void set_terminal_capacity(std::size_t u, double to_source, double to_sink)
-  {
-    m_to_source[u] = to_source;
-    m_to_sink[u] = to_sink;
-  }
-
-  // Hard constraint: node u must be on the given side (FREE removes the constraint).
-  void constrain(std::size_t u, Constraint c) { m_constraint[u] = c; }
-
-  void clear_terminals()
-  {
-    std::fill(m_to_source.begin(), m_to_source.end(), 0.0);
-    std::fill(m_to_sink.begin(), m_to_sink.end(), 0.0);
-    std::fill(m_constraint.begin(), m_constraint.end(), FREE);
-  }
-
-  // Solves the cut; returns its value (the max flow), not counting hard-constraint arcs.
-  double solve()
-  {
-    if(!m_finalized)
-      finalize();
-    // A capacity larger than any finite cut stands for infinity.
-    double total = 1.0;
-    for(const auto& c : m_pair_capacity)
-      total += c.first + c.second;
-    for(std::size_t i = 0; i < m_n; ++i)
-      total += m_to_source[i] + m_to_sink[i];
-    const double infinite = 2 * total;
-    const std::size_t base = 2 * m_pairs.size();
-    for(std::size_t p = 0; p < m_pairs.size(); ++p) {
-      m_capacity[m_slot_to_arc[2 * p]] = checked(m_pair_capacity[p].first);
-      m_capacity[m_slot_to_arc[2 * p + 1]] = checked(m_pair_capacity[p].second);
-    }
-    for(std::size_t i = 0; i < m_n; ++i) {
-      double cs = checked(m_to_source[i]), ct = checked(m_to_sink[i]);
-      if(m_constraint[i] == SOURCE)
-        cs = infinite;
-      else if(m_constraint[i] == SINK)
-        ct = infinite;
-      m_capacity[m_slot_to_arc[base + 4 * i]] = cs;
-      m_capacity[m_slot_to_arc[base + 4 * i + 2]] = ct;
-      m_capacity[m_slot_to_arc[base + 4 * i + 1]] = 0;
-      m_capacity[m_slot_to_arc[base + 4 * i + 3]] = 0;
-    }
-    auto index = get(boost::vertex_index, m_graph);
-    auto edge_index = get(boost::edge_index, m_graph);
-    const double flow = boost::boykov_kolmogorov_max_flow(
-      m_graph, boost::make_iterator_property_map(m_capacity.begin(), edge_index),
-      boost::make_iterator_property_map(m_residual.begin(), edge_index),
-      boost::make_iterator_property_map(m_reverse.begin(), edge_index),
-      boost::make_iterator_property_map(m_predecessor.begin(), index),
-      boost::make_iterator_property_map(m_color.begin(), index),
-      boost::make_iterator_property_map(m_distance.begin(), index), index,
-      static_cast<Vertex>(m_n), static_cast<Vertex>(m_n + 1));
-    return flow;
-  }
-
-  // After solve(): whether node u is on the source side of the minimum cut.
-  bool is_source_side(std::size_t u) const { return m_color[u] == boost::black_color; }
-
-private:
-  static double checked(double c)
-  {
-    if(!(c >= 0) || !std::isfinite(c))
-      throw Bad_input("min-cut: capacities must be finite and non-negative");
-    return c;
-  }
-
-  std::size_t m_n = 0;
-  bool m_finalized = false;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> m_pairs;
-  std::vector<std::pair<double, double>> m_pair_capacity;
-  std::vector<double> m_to_source, m_to_sink;
-  std::vector<Constraint> m_constraint;
-
-  Graph m_graph;
-  std::vector<std::size_t> m_slot_to_arc;
-  std::vector<Arc> m_arcs, m_reverse;
-  std::vector<double> m_capacity, m_residual;
-  std::vector<boost::default_color_type> m_color;
-  std::vector<Arc> m_predecessor;
-  std::vector<std::size_t> m_distance;
-};
 
 // Minimum cut between two nodes of a Dual_graph (no terminal arcs): the cut cost of a graph
 // edge is the capacity of both of its arcs. The topology is built once and only read afterwards,
@@ -289,16 +107,18 @@ private:
 
 // s-t minimum cut with terminal capacities and hard constraints on the project's own
 // Boykov-Kolmogorov solver (Bk_max_flow), for the many small graphs of point-cloud segmentation:
-// the graph is built in compressed rows once (`reset`, `add_edge`, `set_terminal_capacity`,
-// `solve`); hard constraints added afterwards only raise capacities, so `constrain_and_resolve`
-// augments the last flow instead of starting again (interactive segmentation). Not thread-safe:
-// one object per thread.
+// the graph is built in compressed rows at the first solve (`reset`, `add_edge`,
+// `set_terminal_capacity`, `solve`). Capacities (of edges, each way, and of terminal arcs) and
+// constraints may then change and the cut be solved again on the same topology; hard
+// constraints added afterwards only raise capacities, so `constrain_and_resolve` augments the last
+// flow instead of starting again (interactive segmentation). Not thread-safe: one object per
+// thread.
 class Terminal_min_cut
 {
 public:
   enum Side : char { FREE = 0, SOURCE = 1, SINK = 2 };
 
-  Terminal_min_cut() = default;
+  explicit Terminal_min_cut(std::size_t n = 0) { reset(n); }
   // The solver points to the arrays of this object: neither copied nor moved.
   Terminal_min_cut(const Terminal_min_cut&) = delete;
   Terminal_min_cut& operator=(const Terminal_min_cut&) = delete;
@@ -316,8 +136,18 @@ public:
 
   std::size_t number_of_nodes() const { return m_n; }
 
-  // An undirected edge u-v of capacity `c` (finite, non-negative), before the first solve.
-  void add_edge(std::size_t u, std::size_t v, double c) { m_edges.push_back({std::uint32_t(u), std::uint32_t(v), c}); }
+  // An edge u-v whose arc u->v has capacity `c_uv` and v->u `c_vu` (finite, non-negative: checked
+  // at the solve), before the first solve; returns its index.
+  std::size_t add_edge(std::size_t u, std::size_t v, double c_uv, double c_vu)
+  {
+    m_built = false;
+    m_edges.push_back({std::uint32_t(u), std::uint32_t(v), c_uv, c_vu});
+    return m_edges.size() - 1;
+  }
+  // An undirected edge: capacity `c` both ways.
+  std::size_t add_edge(std::size_t u, std::size_t v, double c) { return add_edge(u, v, c, c); }
+  // New capacities of edge `e` (the topology stays).
+  void set_edge_capacity(std::size_t e, double c_uv, double c_vu) { m_edges[e].c_uv = c_uv, m_edges[e].c_vu = c_vu; }
 
   // The cost of putting u on the sink side (`to_source`) and on the source side (`to_sink`).
   void set_terminal_capacity(std::size_t u, double to_source, double to_sink)
@@ -327,8 +157,16 @@ public:
   }
   void constrain(std::size_t u, Side s) { m_constraint[u] = s; }
   Side constraint(std::size_t u) const { return m_constraint[u]; }
+  // No terminal capacity and no constraint left (edges kept).
+  void clear_terminals()
+  {
+    std::fill(m_to_source.begin(), m_to_source.end(), 0.0);
+    std::fill(m_to_sink.begin(), m_to_sink.end(), 0.0);
+    std::fill(m_constraint.begin(), m_constraint.end(), FREE);
+  }
 
-  // Solves from scratch; returns the value of the cut without the hard-constraint arcs.
+  // Solves from scratch; returns the value of the cut: the capacities of the arcs from the source
+  // side to the sink side, the terminal arcs that constraints make infinite left out.
   double solve()
   {
     if(!m_built)
@@ -352,7 +190,7 @@ public:
   }
 
   // Adds hard constraints (pairs of node and side) to the last solve and re-solves by augmenting
-  // its flow. A constraint that contradicts an earlier one (or frees a node) needs a full solve,
+  // its flow (capacities must not have changed since). A constraint that contradicts an earlier one (or frees a node) needs a full solve,
   // which is then made. Returns the value of the cut as solve() does.
   double constrain_and_resolve(const std::vector<std::pair<std::size_t, Side>>& constraints)
   {
@@ -381,7 +219,7 @@ public:
   bool is_source_side(std::size_t u) const { return Bk_max_flow::is_source_side(m_workspace, u); }
 
 private:
-  struct Edge { std::uint32_t u, v; double c; };
+  struct Edge { std::uint32_t u, v; double c_uv, c_vu; };
 
   Bk_max_flow::Index source() const { return Bk_max_flow::Index(m_n); }
   Bk_max_flow::Index sink() const { return Bk_max_flow::Index(m_n + 1); }
@@ -418,21 +256,24 @@ private:
       m_terminal_arc[2 * u + 1] = pair_arcs(std::uint32_t(u), sink()); // u -> t
     }
     m_solver.reset(new Bk_max_flow(m_first, m_target, m_reverse));
-    // A capacity larger than any finite cut stands for infinity.
-    m_infinite = 1.0;
-    for(const Edge& e : m_edges)
-      m_infinite += 2 * checked(e.c);
-    for(std::size_t u = 0; u < m_n; ++u)
-      m_infinite += checked(m_to_source[u]) + checked(m_to_sink[u]);
-    m_infinite *= 2;
     m_built = true;
   }
 
-  void fill_capacities(std::vector<double>& capacity) const
+  // The capacities of the arcs for the current edges, terminals and constraints (a capacity
+  // larger than any finite cut stands for infinity).
+  void fill_capacities(std::vector<double>& capacity)
   {
+    m_infinite = 1.0;
+    for(const Edge& e : m_edges)
+      m_infinite += checked(e.c_uv) + checked(e.c_vu);
+    for(std::size_t u = 0; u < m_n; ++u)
+      m_infinite += checked(m_to_source[u]) + checked(m_to_sink[u]);
+    m_infinite *= 2;
     capacity.assign(m_target.size(), 0.0);
-    for(std::size_t e = 0; e < m_edges.size(); ++e)
-      capacity[m_edge_arc[e]] = capacity[m_reverse[m_edge_arc[e]]] = m_edges[e].c;
+    for(std::size_t e = 0; e < m_edges.size(); ++e) {
+      capacity[m_edge_arc[e]] = m_edges[e].c_uv;
+      capacity[m_reverse[m_edge_arc[e]]] = m_edges[e].c_vu;
+    }
     for(std::size_t u = 0; u < m_n; ++u) {
       capacity[m_terminal_arc[2 * u]] = m_constraint[u] == SOURCE ? m_infinite : m_to_source[u];
       capacity[m_terminal_arc[2 * u + 1]] = m_constraint[u] == SINK ? m_infinite : m_to_sink[u];
@@ -444,9 +285,10 @@ private:
   double finite_part() const
   {
     double cut = 0;
-    for(const Edge& e : m_edges)
-      if(is_source_side(e.u) != is_source_side(e.v))
-        cut += e.c;
+    for(const Edge& e : m_edges) {
+      const bool su = is_source_side(e.u), sv = is_source_side(e.v);
+      cut += su && !sv ? e.c_uv : (sv && !su ? e.c_vu : 0.0);
+    }
     for(std::size_t u = 0; u < m_n; ++u) {
       if(is_source_side(u) && m_constraint[u] != SINK)
         cut += m_to_sink[u];
