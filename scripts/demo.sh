@@ -84,4 +84,4 @@ echo
 echo "Coloured segmentations (per-face colours) and partition functions (per-vertex colours) in $out:"
 ls -1 "$out"/*.ply "$out"/coseg/*.ply "$out"/coseg_symmetric/*.ply
 echo "Symmetrized and enhanced meshes: $out/cow_symmetric.off, $out/cow_asymmetry_tripled.off"
-echo "Point clouds: $out/street_scan.ply (objects: $out/street_objects.json), $out/street_foreground.ply, $out/street_segmented.ply, $out/b9_foreground.ply"
+echo "Point clouds: $out/street_scan.ply (objects: $out/street_objects.json), $out/street_foreground.ply, $out/street_segmented.ply, $out/street_recognized.ply (in tiles), $out/b9_foreground.ply"

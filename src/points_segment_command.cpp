@@ -128,6 +128,15 @@ Json objects_report(const std::vector<std::array<double, 3>>& locations, const s
   return list;
 }
 
+// objects.ply adds the properties 'object' and 'ground': an input that has one is refused before
+// any work.
+void require_no_object_properties(const CGAL::Point_set_3<Point_3>& points, const std::string& input)
+{
+  for(const std::string& name : points.properties())
+    if(name == "object" || name == "ground")
+      throw Cli_error(input + " already has an 'object' or a 'ground' property");
+}
+
 // Stages objects.ply: the input's points in input order with their properties, 'object' (per point
 // its location's row, -1 for none), 'ground' (1 for ground) and, unless the input has colours,
 // colours by object (grey for none).
@@ -196,6 +205,7 @@ int run_segment(const Segment_options& o)
   const double read_seconds = reading.seconds();
   if(points.empty())
     throw Cli_error(o.input + ": the point cloud is empty");
+  require_no_object_properties(points, o.input);
 
   progress.stage("estimating the ground of " + std::to_string(points.size()) + " points");
   Stopwatch work;
@@ -269,6 +279,7 @@ struct Recognize_options
 {
   std::string input, output, locations, report, method = "nc", segmentation = "mincut-auto";
   double tile = 100, margin = 10, radius = 2;
+  std::vector<double> origin; // empty: the corner of the bounding box
   std::size_t threads = 0;
   bool quiet = false, verbose = false;
 };
@@ -302,17 +313,21 @@ int run_recognize(const Recognize_options& o)
   const double read_seconds = reading.seconds();
   if(points.empty())
     throw Cli_error(o.input + ": the point cloud is empty");
+  require_no_object_properties(points, o.input);
 
-  progress.stage("recognizing objects among " + std::to_string(points.size()) + " points, tiles of " +
-                 std::to_string(o.tile) + " m");
+  std::ostringstream stage;
+  stage << "recognizing objects among " << points.size() << " points, tiles of " << o.tile << " m";
+  progress.stage(stage.str());
   Stopwatch work;
-  const PSOR::Object_recognition_result r = PSOR::recognize_objects(
-    points, PSOR::parameters::tile_size(o.tile)
-              .tile_margin(o.margin)
-              .localization_method(localization_method(o.method))
-              .segmentation_method(segmentation_method(o.segmentation))
-              .background_radius(o.radius)
-              .number_of_threads(o.threads));
+  const auto parameters = PSOR::parameters::tile_size(o.tile)
+                            .tile_margin(o.margin)
+                            .localization_method(localization_method(o.method))
+                            .segmentation_method(segmentation_method(o.segmentation))
+                            .background_radius(o.radius)
+                            .number_of_threads(o.threads);
+  const PSOR::Object_recognition_result r =
+    o.origin.empty() ? PSOR::recognize_objects(points, parameters)
+                     : PSOR::recognize_objects(points, parameters.tile_origin(std::array<double, 2>{{o.origin[0], o.origin[1]}}));
   const double seconds = work.seconds();
 
   progress.stage("writing " + o.output);
@@ -340,6 +355,8 @@ int run_recognize(const Recognize_options& o)
     Json parameters = Json::object();
     parameters["tile_size"] = o.tile;
     parameters["tile_margin"] = o.margin;
+    if(!o.origin.empty())
+      parameters["tile_origin"] = Json(o.origin);
     parameters["method"] = o.method;
     parameters["segmentation"] = o.segmentation;
     parameters["radius"] = o.radius;
@@ -560,6 +577,11 @@ void add_points_segment_commands(CLI::App* points, std::function<int()>& run)
   recognize->add_option("--tile-size", g->tile, "Side of the square tiles (m)")->capture_default_str();
   recognize->add_option("--tile-margin", g->margin, "Band around a tile whose points it is processed with (m)")
     ->capture_default_str();
+  recognize->add_option("--tile-origin", g->origin,
+                        "A corner of the tiles' grid, x,y (default: the corner of the bounding box); separate runs "
+                        "on bands of a scene with one origin have the same tiles")
+    ->expected(2)
+    ->delimiter(',');
   recognize->add_option("--method", g->method, "Localization: nc, cc, meanshift or image")
     ->capture_default_str()
     ->check(CLI::IsMember({"nc", "cc", "meanshift", "image"}));

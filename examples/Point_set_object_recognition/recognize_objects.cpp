@@ -27,7 +27,12 @@ int main(int argc, char** argv)
   std::vector<Point> scan;
   if(argc > 1 && std::string(argv[1]) != "-") {
     CGAL::Point_set_3<Point> ps;
-    PSOR::read_point_set(argv[1], ps);
+    try {
+      PSOR::read_point_set(argv[1], ps);
+    } catch(const CGAL::Shape_analysis::Bad_input& e) {
+      std::cerr << argv[1] << ": " << e.what() << "\n";
+      return 1;
+    }
     for(auto i : ps)
       scan.push_back(ps.point(i));
   } else { // a generated street of 400 m
@@ -41,8 +46,13 @@ int main(int argc, char** argv)
   }
   const double tile = argc > 2 ? std::stod(argv[2]) : 100.0;
   // Ground, background, normalized-cut localization and min-cut segmentation, one tile at a time.
-  const PSOR::Object_recognition_result r =
-    PSOR::recognize_objects(scan, PSOR::parameters::tile_size(tile).tile_margin(10.0));
+  PSOR::Object_recognition_result r;
+  try {
+    r = PSOR::recognize_objects(scan, PSOR::parameters::tile_size(tile).tile_margin(10.0));
+  } catch(const CGAL::Shape_analysis::Bad_input& e) { // an empty cloud, a tile size <= 0, ...
+    std::cerr << e.what() << "\n";
+    return 1;
+  }
   for(const PSOR::Scene_tile& t : r.tiles)
     std::cout << "tile [" << t.min[0] << ", " << t.max[0] << ") x [" << t.min[1] << ", " << t.max[1] << "): "
               << t.number_of_points << " points, " << t.number_of_locations << " objects, " << t.seconds << " s\n";

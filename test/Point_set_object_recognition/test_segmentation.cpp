@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -464,6 +465,68 @@ TEST(Segmentation, RecognitionInTilesAgreesWithOneTile)
   }
   EXPECT_GE(double(both), 0.98 * double(ground1));
   EXPECT_GE(double(both), 0.98 * double(groundt));
+}
+
+TEST(Segmentation, RecognitionWithAMarginCoveringTheSceneLocatesAsOneTile)
+{
+  // With a margin over the whole scene every tile sees all of it: the locations found are exactly
+  // those of one tile (each kept by one tile), and so are the kinds of the points.
+  const Whole_scan& w = whole_scan();
+  const auto one = PSOR::recognize_objects(w.points, PSOR::parameters::tile_size(1000.0));
+  const auto all = PSOR::recognize_objects(w.points, PSOR::parameters::tile_size(80.0).tile_margin(1e30));
+  ASSERT_GE(all.tiles.size(), 2u);
+  EXPECT_EQ(all.largest_tile, w.points.size());
+  auto sorted = [](const std::vector<PSOR::Object_location>& l) {
+    std::vector<std::array<double, 3>> r;
+    for(const auto& x : l)
+      r.push_back(x.position);
+    std::sort(r.begin(), r.end());
+    return r;
+  };
+  EXPECT_EQ(sorted(all.locations), sorted(one.locations));
+  EXPECT_TRUE(all.kind == one.kind);
+  // No margin: objects near the borders lose their surroundings, but nothing breaks, and no
+  // object holds a ground point.
+  const auto bare = PSOR::recognize_objects(w.points, PSOR::parameters::tile_size(40.0).tile_margin(0.0));
+  ASSERT_EQ(bare.objects.size(), bare.locations.size());
+  for(const auto& o : bare.objects)
+    for(std::size_t i : o.points)
+      ASSERT_NE(bare.kind[i], PSOR::Point_kind::GROUND);
+}
+
+TEST(Segmentation, RecognitionOfABandReproducesItsTiles)
+{
+  // A cluster's share: the tiles of the band 0 <= x < 80 (tiles of 40 m on the grid through the
+  // origin) from the band's points and its margin alone find the same objects as the whole run.
+  const Whole_scan& w = whole_scan();
+  const std::array<double, 2> origin{{0, 0}};
+  const auto params = PSOR::parameters::tile_size(40.0).tile_margin(10.0).tile_origin(origin);
+  const auto whole = PSOR::recognize_objects(w.points, params);
+  std::vector<Point> band;
+  std::vector<std::size_t> index;
+  for(std::size_t i = 0; i < w.points.size(); ++i)
+    if(w.points[i].x() >= -10 && w.points[i].x() <= 90)
+      band.push_back(w.points[i]), index.push_back(i);
+  const auto part = PSOR::recognize_objects(band, params);
+  auto in_band = [](const PSOR::Object_recognition_result& r, const std::vector<std::size_t>& to_input) {
+    std::vector<std::pair<std::array<double, 3>, std::vector<std::size_t>>> found;
+    for(std::size_t k = 0; k < r.locations.size(); ++k)
+      if(r.locations[k].position[0] >= 0 && r.locations[k].position[0] < 80) {
+        std::vector<std::size_t> points;
+        for(std::size_t i : r.objects[k].points)
+          points.push_back(to_input.empty() ? i : to_input[i]);
+        found.emplace_back(r.locations[k].position, points);
+      }
+    std::sort(found.begin(), found.end());
+    return found;
+  };
+  const auto expected = in_band(whole, {});
+  ASSERT_GE(expected.size(), 5u);
+  EXPECT_TRUE(in_band(part, index) == expected);
+  for(const auto& t : whole.tiles) // the grid goes through the origin
+    EXPECT_EQ(std::fmod(std::abs(t.min[0]), 40.0), 0.0);
+  EXPECT_THROW(PSOR::recognize_objects(w.points, PSOR::parameters::tile_origin(std::array<double, 2>{{std::nan(""), 0.0}})),
+               Bad_input);
 }
 
 TEST(Segmentation, RecognitionSameForAnyThreadCount)

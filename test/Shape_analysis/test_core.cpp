@@ -602,6 +602,33 @@ TEST(MinCut, ConstraintsAddedAfterASolveAugmentTheFlow)
   }
 }
 
+TEST(MinCut, ChangesBetweenSolvesAreTakenIntoAccount)
+{
+  // 0 - 1 - 2 in a chain; 0 wants the source side, 2 the sink side.
+  SAI::Terminal_min_cut solver(3);
+  solver.add_edge(0, 1, 1.0);
+  solver.add_edge(1, 2, 2.0);
+  solver.set_terminal_capacity(0, 10, 0);
+  solver.set_terminal_capacity(2, 0, 10);
+  EXPECT_NEAR(solver.solve(), 1.0, 1e-12); // cut 0-1
+  EXPECT_FALSE(solver.is_source_side(1));
+  // An edge added after the solve: the graph is rebuilt (0-2 of 0.5 now crosses every cut).
+  solver.add_edge(0, 2, 0.5);
+  EXPECT_NEAR(solver.solve(), 1.5, 1e-12);
+  // A capacity lowered, then a constraint: the re-solve starts again (an augmentation of the
+  // old flow would be wrong); with 1 on the source side the cut goes through the cheap 1-2 edge.
+  solver.set_edge_capacity(1, 0.1, 0.1);
+  EXPECT_NEAR(solver.constrain_and_resolve({{std::size_t(1), SAI::Terminal_min_cut::SOURCE}}), 0.6, 1e-12);
+  EXPECT_TRUE(solver.is_source_side(1));
+  // A solve that throws (a negative capacity) leaves nothing to augment: the next call solves.
+  solver.set_edge_capacity(0, -1.0, 1.0);
+  EXPECT_THROW(solver.solve(), SA::Bad_input);
+  solver.set_edge_capacity(0, 1.0, 1.0);
+  EXPECT_NEAR(solver.constrain_and_resolve({{std::size_t(0), SAI::Terminal_min_cut::SOURCE}}), 0.6, 1e-12);
+  EXPECT_TRUE(solver.is_source_side(1));
+  EXPECT_FALSE(solver.is_source_side(2));
+}
+
 TEST(MinCut, HardConstraintsWinOverExpensiveCuts)
 {
   // A chain 0-1-2-3 with expensive links; node 0 prefers the sink strongly and node 3 the source,

@@ -82,7 +82,7 @@ endforeach()
 
 # points recognize: the whole chain in tiles of 20 m on the raw scan; its locations and objects
 # evaluated against the truth.
-run_tool(points recognize "${WORK}/scene.ply" --tile-size 20 --tile-margin 10 -q --output "${WORK}/recognized.ply"
+run_tool(points recognize "${WORK}/scene.ply" --tile-size 20 --tile-margin 10 --tile-origin 0,0 -q --output "${WORK}/recognized.ply"
          --locations "${WORK}/found.csv" --report "${WORK}/recognize.json")
 file(READ "${WORK}/recognize.json" report)
 string(JSON tiles LENGTH "${report}" tiles)
@@ -134,3 +134,4 @@ expect_failure("tile-size" points recognize "${WORK}/scene.ply" --tile-size 0 ${
 expect_failure("tile-margin" points recognize "${WORK}/scene.ply" --tile-margin -1 ${bad})
 expect_failure("csv" points recognize "${WORK}/scene.ply" --locations "${WORK}/bad.txt" ${bad})
 expect_failure("cannot open|nothing" points recognize "${WORK}/nothing.ply" ${bad})
+expect_failure("tile-origin" points recognize "${WORK}/scene.ply" --tile-origin 1 ${bad})

@@ -34,7 +34,7 @@ namespace Point_set_object_recognition {
 struct Scene_tile
 {
   /// its own part of the plane: the points with `min[0] <= x < max[0]` and `min[1] <= y < max[1]`
-  /// (the last row and column of tiles also hold their upper border)
+  /// (the last row and column may hold points rounded onto their upper border)
   std::array<double, 2> min{{0, 0}}, max{{0, 0}};
   std::size_t number_of_points = 0;    ///< the points it was processed with: its own and its margin's
   std::size_t number_of_locations = 0; ///< the locations found in its own part
@@ -64,12 +64,15 @@ namespace internal {
 struct Recognition_options
 {
   double tile = 100, margin = 10;
+  bool origin_given = false;
+  std::array<double, 2> origin{{0, 0}};
   Background_options background;
   Localization_options localization;
   Segmentation_options segmentation;
 };
 
-// Tiles of side `side` from `lo`, `n` of them along each axis (the last one takes the border).
+// Tiles of side `side` from `lo`, `n` of them along each axis (clamped: a
+// coordinate rounded out of the grid belongs to the nearest tile).
 struct Tile_grid
 {
   std::array<double, 2> lo{{0, 0}};
@@ -102,11 +105,16 @@ Object_recognition_result recognize_objects(std::size_t n, const PointAt& point,
     lo[0] = (std::min)(lo[0], q[0]), lo[1] = (std::min)(lo[1], q[1]);
     hi[0] = (std::max)(hi[0], q[0]), hi[1] = (std::max)(hi[1], q[1]);
   }
+  // The tiles start at the corner of the bounding box, or on the grid of the given origin (so that
+  // separate runs on parts of a scene have the same tiles).
   Tile_grid grid;
   grid.lo = lo;
+  if(o.origin_given)
+    for(int c = 0; c < 2; ++c)
+      grid.lo[c] = o.origin[c] + std::floor((lo[c] - o.origin[c]) / o.tile) * o.tile;
   grid.side = o.tile;
-  const double nx = std::floor((hi[0] - lo[0]) / o.tile) + 1, ny = std::floor((hi[1] - lo[1]) / o.tile) + 1;
-  if(nx * ny > 1e8)
+  const double nx = std::floor((hi[0] - grid.lo[0]) / o.tile) + 1, ny = std::floor((hi[1] - grid.lo[1]) / o.tile) + 1;
+  if(!(nx * ny <= 1e8))
     throw Bad_input("recognize_objects: more than 10^8 tiles (use a larger tile_size)");
   grid.nx = long(nx), grid.ny = long(ny);
 
@@ -129,7 +137,23 @@ Object_recognition_result recognize_objects(std::size_t n, const PointAt& point,
   Object_recognition_result r;
   r.object_of_point.assign(n, Object_recognition_result::no_object);
   r.kind.assign(n, Point_kind::GROUND);
-  const long reach = long(std::ceil(o.margin / o.tile));
+  // The tiles whose points can lie within the margin (bounded by the grid: any margin is valid).
+  const long reach = long((std::min)(std::floor(o.margin / o.tile) + 1, double((std::max)(grid.nx, grid.ny))));
+  // The tile that keeps a location: the one holding it or, when that one holds no point (a
+  // location over a hole of the scan), the first of its neighbours that holds some.
+  const auto owner = [&](const P3& l) {
+    const long cx = grid.column(l[0]), cy = grid.row(l[1]);
+    const std::size_t u = std::size_t(cy * grid.nx + cx);
+    if(first[u] != first[u + 1])
+      return u;
+    for(long j = (std::max)(0L, cy - 1); j <= (std::min)(grid.ny - 1, cy + 1); ++j)
+      for(long i = (std::max)(0L, cx - 1); i <= (std::min)(grid.nx - 1, cx + 1); ++i) {
+        const std::size_t v = std::size_t(j * grid.nx + i);
+        if(first[v] != first[v + 1])
+          return v;
+      }
+    return tiles; // none
+  };
   std::vector<std::uint32_t> local;
   std::vector<P3> q, kept, foreground;
   for(long ty = 0; ty < grid.ny; ++ty)
@@ -139,7 +163,7 @@ Object_recognition_result recognize_objects(std::size_t n, const PointAt& point,
         continue;
       const auto tile_start = std::chrono::steady_clock::now();
       Scene_tile tile;
-      tile.min = {{lo[0] + double(tx) * o.tile, lo[1] + double(ty) * o.tile}};
+      tile.min = {{grid.lo[0] + double(tx) * o.tile, grid.lo[1] + double(ty) * o.tile}};
       tile.max = {{tile.min[0] + o.tile, tile.min[1] + o.tile}};
       // Its points and those of its margin, in input order.
       local.clear();
@@ -147,6 +171,10 @@ Object_recognition_result recognize_objects(std::size_t n, const PointAt& point,
         for(long i = (std::max)(0L, tx - reach); i <= (std::min)(grid.nx - 1, tx + reach); ++i) {
           const std::size_t u = std::size_t(j * grid.nx + i);
           for(std::uint32_t k = first[u]; k < first[u + 1]; ++k) {
+            if(u == t) { // its own points (whatever the rounding)
+              local.push_back(order[k]);
+              continue;
+            }
             const P3 a = point(order[k]);
             if(a[0] >= tile.min[0] - o.margin && a[0] <= tile.max[0] + o.margin && a[1] >= tile.min[1] - o.margin &&
                a[1] <= tile.max[1] + o.margin)
@@ -170,7 +198,7 @@ Object_recognition_result recognize_objects(std::size_t n, const PointAt& point,
       const Localization_result found = internal::locate_objects(foreground, o.localization);
       std::vector<P3> own;
       for(const Object_location& l : found.locations)
-        if(grid.tile(l.position[0], l.position[1]) == t) {
+        if(owner(l.position) == t) {
           r.locations.push_back(l);
           own.push_back(l.position);
         }
@@ -200,6 +228,19 @@ Object_recognition_result recognize_objects(std::size_t n, const PointAt& point,
       tile.seconds = since(tile_start);
       r.tiles.push_back(tile);
     }
+  // A point of a margin segmented by one tile may be ground for its own tile: an object holds no
+  // ground point.
+  for(std::size_t id = 0; id < r.objects.size(); ++id) {
+    std::vector<std::size_t>& points = r.objects[id].points;
+    points.erase(std::remove_if(points.begin(), points.end(),
+                                [&](std::size_t i) {
+                                  if(r.kind[i] != Point_kind::GROUND)
+                                    return false;
+                                  r.object_of_point[i] = Object_recognition_result::no_object;
+                                  return true;
+                                }),
+                 points.end());
+  }
   r.seconds = since(start);
   return r;
 }
@@ -212,6 +253,10 @@ Recognition_options recognition_options(const NamedParameters& np)
   Recognition_options o;
   o.tile = SAI::parameter_value<double>(np, snp::tile_size_tag, 100.0);
   o.margin = SAI::parameter_value<double>(np, snp::tile_margin_tag, 10.0);
+  o.origin_given = !CGAL::parameters::is_default_parameter<NamedParameters, snp::tile_origin_t>::value;
+  o.origin = SAI::parameter_value<std::array<double, 2>>(np, snp::tile_origin_tag, std::array<double, 2>{{0, 0}});
+  if(!std::isfinite(o.origin[0]) || !std::isfinite(o.origin[1]))
+    throw Bad_input("recognize_objects: tile_origin must be finite");
   if(!(o.tile > 0) || !std::isfinite(o.tile))
     throw Bad_input("recognize_objects: tile_size must be a positive number");
   if(!(o.margin >= 0) || !std::isfinite(o.margin))
@@ -239,19 +284,23 @@ Finds and segments the objects of a scanned scene of any size: `remove_backgroun
 `locate_objects()` among the foreground, then `segment_objects()` of the located objects among the
 points above the ground, as \cgalCite{Golovinskiy2010} (chapter 4) chains them, tile by tile.
 
-The horizontal plane is cut into square tiles of side `tile_size` from the corner of the points'
-bounding box. Each tile that holds points is processed on its own points and on those within
-`tile_margin` of it, and keeps the locations that fall in it: an object across a tile border is
-found once, by the tile that holds its location, and segmented with all its surroundings when the
-margin is wider than the object plus the reach of the segmentation (the largest background radius
-plus 2 m: 7 m for the automatic radius). The grids and graphs are those of one tile at a time:
+The horizontal plane is cut into squares of side `tile_size` from the corner of the points'
+bounding box (or on the grid through `tile_origin`). Each square that holds points (a tile) is processed on its own points and on those within `tile_margin` of it,
+and keeps the locations that fall in it (a location over a square without points goes to the
+first neighbouring tile). An object across a border is then found by the tile that holds its
+location, with all its surroundings when the margin is wider than the object plus the reach of the
+segmentation (the largest background radius plus 2 m: 7 m for the automatic radius); since each
+tile locates objects in its own view, an object right at a border can still, rarely, be located
+on both sides or on neither. A point keeps the kind (`Point_kind`) that its own tile gives it,
+and an object keeps none of the points its own tiles find to be ground. The grids and graphs are those of one tile at a time:
 their memory does not grow with the scene, only the per-point results do; and localization by
 normalized cuts, whose time grows faster than the number of points, is applied to tiles of
 bounded size. The tiles are processed one after the other (each stage with `number_of_threads`),
 so the results are the same for any number of threads. Since a tile depends only on the points
 within its margin, separate processes (on a cluster) can each be given the points of a band of
-the scene plus those within `tile_margin` of it, and keep the locations (with their objects) that
-fall inside their band.
+whole tiles plus those within `tile_margin` of it, with one `tile_origin` for all, and keep the
+tiles of their band: those tiles come out as in a single run with that origin (the points in the
+same relative order).
 
 \tparam PointRange a model of `ConstRange` whose iterator type is `RandomAccessIterator`
 \tparam NamedParameters a sequence of named parameters
@@ -275,7 +324,17 @@ fall inside their band.
     \cgalParamDescription{the width of the band around a tile whose points it is processed with, in metres}
     \cgalParamType{`double`}
     \cgalParamDefault{`10`}
-    \cgalParamExtra{must be zero or positive}
+    \cgalParamExtra{must be zero or positive; below the segmentation's reach (7 m), objects near a
+      border lose their surroundings; below the background removal's `maximum_component_extent`
+      (12 m), a building that only pokes into the margin may be kept as foreground there (it
+      does not change the tile's own points' kinds, only what its localization sees)}
+  \cgalParamNEnd
+  \cgalParamNBegin{tile_origin}
+    \cgalParamDescription{a corner of the grid of tiles (x, y): the tiles are the squares of side
+      `tile_size` whose corners are this point plus multiples of `tile_size`}
+    \cgalParamType{`std::array<double, 2>`}
+    \cgalParamDefault{the lower corner of the points' horizontal bounding box}
+    \cgalParamExtra{must be finite}
   \cgalParamNEnd
   \cgalParamNBegin{localization_method}
     \cgalParamDescription{how `locate_objects()` groups the foreground points}
@@ -305,8 +364,10 @@ The other parameters of the three stages take their defaults.
 \returns the locations, one segmentation per location, the object and the kind of every point,
          and the tiles with their sizes and times
 
-\throws CGAL::Shape_analysis::Bad_input if the cloud is empty, a coordinate is not finite, a
-        parameter is out of its range, or the scene would have more than \f$10^8\f$ tiles
+\throws CGAL::Shape_analysis::Bad_input if the cloud is empty or holds \f$2^{32} - 1\f$ points or
+        more, a coordinate is not finite, a parameter is out of its range, the scene would have
+        more than \f$10^8\f$ tiles, or a stage rejects a tile (as `remove_background()`,
+        `locate_objects()` and `segment_objects()` do: a tile too tall for their grids)
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 Object_recognition_result recognize_objects(const PointRange& points,

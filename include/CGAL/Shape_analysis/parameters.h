@@ -95,7 +95,8 @@ namespace internal_np {
   X(minimum_foreground_size_t, minimum_foreground_size_tag, minimum_foreground_size) \
   X(maximum_cut_cost_t, maximum_cut_cost_tag, maximum_cut_cost)                     \
   X(tile_size_t, tile_size_tag, tile_size)                                           \
-  X(tile_margin_t, tile_margin_tag, tile_margin)
+  X(tile_margin_t, tile_margin_tag, tile_margin)                                     \
+  X(tile_origin_t, tile_origin_tag, tile_origin)
 
 #define CGAL_SHAPE_ANALYSIS_DECLARE_TAG(X, Y, Z) enum X { Y };
 CGAL_SHAPE_ANALYSIS_NAMED_PARAMETER_LIST(CGAL_SHAPE_ANALYSIS_DECLARE_TAG)

@@ -132,30 +132,40 @@ public:
     m_to_sink.assign(n, 0.0);
     m_constraint.assign(n, FREE);
     m_built = false;
+    m_solved = false;
   }
 
   std::size_t number_of_nodes() const { return m_n; }
 
   // An edge u-v whose arc u->v has capacity `c_uv` and v->u `c_vu` (finite, non-negative: checked
-  // at the solve), before the first solve; returns its index.
+  // at the solve); returns its index. (Edges added after a solve make the next one rebuild.)
   std::size_t add_edge(std::size_t u, std::size_t v, double c_uv, double c_vu)
   {
-    m_built = false;
+    m_built = false, m_solved = false;
     m_edges.push_back({std::uint32_t(u), std::uint32_t(v), c_uv, c_vu});
     return m_edges.size() - 1;
   }
   // An undirected edge: capacity `c` both ways.
   std::size_t add_edge(std::size_t u, std::size_t v, double c) { return add_edge(u, v, c, c); }
   // New capacities of edge `e` (the topology stays).
-  void set_edge_capacity(std::size_t e, double c_uv, double c_vu) { m_edges[e].c_uv = c_uv, m_edges[e].c_vu = c_vu; }
+  void set_edge_capacity(std::size_t e, double c_uv, double c_vu)
+  {
+    m_edges[e].c_uv = c_uv, m_edges[e].c_vu = c_vu;
+    m_solved = false;
+  }
 
   // The cost of putting u on the sink side (`to_source`) and on the source side (`to_sink`).
   void set_terminal_capacity(std::size_t u, double to_source, double to_sink)
   {
     m_to_source[u] = to_source;
     m_to_sink[u] = to_sink;
+    m_solved = false;
   }
-  void constrain(std::size_t u, Side s) { m_constraint[u] = s; }
+  void constrain(std::size_t u, Side s)
+  {
+    m_constraint[u] = s;
+    m_solved = false;
+  }
   Side constraint(std::size_t u) const { return m_constraint[u]; }
   // No terminal capacity and no constraint left (edges kept).
   void clear_terminals()
@@ -163,12 +173,14 @@ public:
     std::fill(m_to_source.begin(), m_to_source.end(), 0.0);
     std::fill(m_to_sink.begin(), m_to_sink.end(), 0.0);
     std::fill(m_constraint.begin(), m_constraint.end(), FREE);
+    m_solved = false;
   }
 
   // Solves from scratch; returns the value of the cut: the capacities of the arcs from the source
   // side to the sink side, the terminal arcs that constraints make infinite left out.
   double solve()
   {
+    m_solved = false;
     if(!m_built)
       build();
     fill_capacities(m_capacity);
@@ -176,30 +188,30 @@ public:
     // lose their smaller capacity, which lowers every cut by the same amount (a cut cuts one of
     // them) and leaves the minimum cuts and the residual graph of a maximum flow as they were.
     m_pushed.resize(m_n);
-    double pushed = 0;
     for(std::size_t u = 0; u < m_n; ++u) {
       double& a = m_capacity[m_terminal_arc[2 * u]];
       double& b = m_capacity[m_terminal_arc[2 * u + 1]];
       m_pushed[u] = (std::min)(a, b);
       a -= m_pushed[u];
       b -= m_pushed[u];
-      pushed += m_pushed[u];
     }
-    m_flow = pushed + m_solver->solve(m_capacity, source(), sink(), m_workspace);
+    m_solver->solve(m_capacity, source(), sink(), m_workspace);
+    m_solved = true;
     return finite_part();
   }
 
   // Adds hard constraints (pairs of node and side) to the last solve and re-solves by augmenting
-  // its flow (capacities must not have changed since). A constraint that contradicts an earlier one (or frees a node) needs a full solve,
+  // its flow; after any other change since that solve (or without one), solves from scratch. A constraint that contradicts an earlier one (or frees a node) needs a full solve,
   // which is then made. Returns the value of the cut as solve() does.
   double constrain_and_resolve(const std::vector<std::pair<std::size_t, Side>>& constraints)
   {
-    bool grows = m_built;
+    bool grows = m_solved;
     for(const auto& c : constraints)
       if(c.second == FREE || (m_constraint[c.first] != FREE && m_constraint[c.first] != c.second))
         grows = false;
     for(const auto& c : constraints)
       m_constraint[c.first] = c.second;
+    m_solved = false;
     if(!grows)
       return solve();
     m_previous.swap(m_capacity);
@@ -210,7 +222,8 @@ public:
       m_capacity[m_terminal_arc[2 * u]] -= m_pushed[u];
       m_capacity[m_terminal_arc[2 * u + 1]] -= m_pushed[u];
     }
-    m_flow += m_solver->solve_with_larger_capacities(m_previous, m_capacity, source(), sink(), m_workspace);
+    m_solver->solve_with_larger_capacities(m_previous, m_capacity, source(), sink(), m_workspace);
+    m_solved = true;
     return finite_part();
   }
 
@@ -307,7 +320,8 @@ private:
 
   std::size_t m_n = 0;
   bool m_built = false;
-  double m_infinite = 1, m_flow = 0;
+  bool m_solved = false; // the last solve succeeded and nothing changed since
+  double m_infinite = 1;
   std::vector<Edge> m_edges;
   std::vector<double> m_to_source, m_to_sink;
   std::vector<Side> m_constraint;

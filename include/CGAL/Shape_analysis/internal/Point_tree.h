@@ -26,7 +26,7 @@ void keep_k_smallest(std::vector<T>& heap, std::size_t k, const T& c)
   if(heap.size() < k) {
     heap.push_back(c);
     std::push_heap(heap.begin(), heap.end());
-  } else if(c < heap.front()) {
+  } else if(k > 0 && c < heap.front()) {
     std::pop_heap(heap.begin(), heap.end());
     heap.back() = c;
     std::push_heap(heap.begin(), heap.end());
