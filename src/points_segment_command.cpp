@@ -128,13 +128,23 @@ Json objects_report(const std::vector<std::array<double, 3>>& locations, const s
   return list;
 }
 
-// objects.ply adds the properties 'object' and 'ground': an input that has one is refused before
-// any work.
-void require_no_object_properties(const CGAL::Point_set_3<Point_3>& points, const std::string& input)
+// Reads the scan of 'points segment' and 'points recognize' in the file's coordinates (no shift:
+// doubles keep UTM coordinates to 0.1 um, and the locations are in those coordinates); refuses an
+// empty one, and one that has the properties objects.ply adds ('object', 'ground') before any
+// work. `read_seconds`: the time it took.
+PSOR::Point_set_read_result read_scan_to_segment(const std::string& input, CGAL::Point_set_3<Point_3>& points,
+                                                 double& read_seconds)
 {
+  Stopwatch reading;
+  const PSOR::Point_set_read_result read =
+    PSOR::read_point_set(input, points, PSOR::parameters::shift_to_local_origin(false));
+  read_seconds = reading.seconds();
+  if(points.empty())
+    throw Cli_error(input + ": the point cloud is empty");
   for(const std::string& name : points.properties())
     if(name == "object" || name == "ground")
       throw Cli_error(input + " already has an 'object' or a 'ground' property");
+  return read;
 }
 
 // Stages objects.ply: the input's points in input order with their properties, 'object' (per point
@@ -197,15 +207,9 @@ int run_segment(const Segment_options& o)
 
   const std::vector<Location> requested = read_locations(o.locations);
   progress.stage("reading " + o.input);
-  Stopwatch reading;
   CGAL::Point_set_3<Point_3> points;
-  // Locations are in the file's coordinates: no shift (doubles keep UTM coordinates to 0.1 um).
-  const PSOR::Point_set_read_result read =
-    PSOR::read_point_set(o.input, points, PSOR::parameters::shift_to_local_origin(false));
-  const double read_seconds = reading.seconds();
-  if(points.empty())
-    throw Cli_error(o.input + ": the point cloud is empty");
-  require_no_object_properties(points, o.input);
+  double read_seconds = 0;
+  const PSOR::Point_set_read_result read = read_scan_to_segment(o.input, points, read_seconds);
 
   progress.stage("estimating the ground of " + std::to_string(points.size()) + " points");
   Stopwatch work;
@@ -305,15 +309,9 @@ int run_recognize(const Recognize_options& o)
     throw Usage_error("--radius must be a positive number");
 
   progress.stage("reading " + o.input);
-  Stopwatch reading;
   CGAL::Point_set_3<Point_3> points;
-  // In the file's coordinates, as 'points segment' (doubles keep UTM coordinates to 0.1 um).
-  const PSOR::Point_set_read_result read =
-    PSOR::read_point_set(o.input, points, PSOR::parameters::shift_to_local_origin(false));
-  const double read_seconds = reading.seconds();
-  if(points.empty())
-    throw Cli_error(o.input + ": the point cloud is empty");
-  require_no_object_properties(points, o.input);
+  double read_seconds = 0;
+  const PSOR::Point_set_read_result read = read_scan_to_segment(o.input, points, read_seconds);
 
   std::ostringstream stage;
   stage << "recognizing objects among " << points.size() << " points, tiles of " << o.tile << " m";

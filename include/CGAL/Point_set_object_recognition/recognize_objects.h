@@ -245,6 +245,18 @@ Object_recognition_result recognize_objects(std::size_t n, const PointAt& point,
   return r;
 }
 
+// recognize_objects() of a random-access range read through `point_map`, in place.
+template <typename PointRange, typename PointMap>
+Object_recognition_result recognize_objects_of_range(const PointRange& points, const PointMap& point_map,
+                                                     const Recognition_options& o)
+{
+  const auto begin = std::begin(points);
+  return recognize_objects(std::size_t(std::distance(begin, std::end(points))), [&](std::size_t i) {
+    const auto& q = get(point_map, *(begin + std::ptrdiff_t(i)));
+    return P3{{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+  }, o);
+}
+
 template <typename NamedParameters>
 Recognition_options recognition_options(const NamedParameters& np)
 {
@@ -373,15 +385,10 @@ template <typename PointRange, typename NamedParameters = parameters::Default_na
 Object_recognition_result recognize_objects(const PointRange& points,
                                             const NamedParameters& np = parameters::default_values())
 {
-  const internal::Recognition_options o = internal::recognition_options(np);
   typedef typename std::iterator_traits<typename PointRange::const_iterator>::value_type Value;
   const auto point_map = CGAL::parameters::choose_parameter(
     CGAL::parameters::get_parameter(np, CGAL::internal_np::point_map), CGAL::Identity_property_map<Value>());
-  const auto begin = std::begin(points);
-  return internal::recognize_objects(std::size_t(std::distance(begin, std::end(points))), [&](std::size_t i) {
-    const auto& q = get(point_map, *(begin + std::ptrdiff_t(i)));
-    return internal::P3{{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
-  }, o);
+  return internal::recognize_objects_of_range(points, point_map, internal::recognition_options(np));
 }
 
 /// \ingroup PkgPointSetObjectRecognitionRef
@@ -396,12 +403,7 @@ template <typename Point, typename Vector, typename NamedParameters = parameters
 Object_recognition_result recognize_objects(const CGAL::Point_set_3<Point, Vector>& point_set,
                                             const NamedParameters& np = parameters::default_values())
 {
-  const internal::Recognition_options o = internal::recognition_options(np);
-  const auto begin = point_set.begin();
-  return internal::recognize_objects(point_set.size(), [&](std::size_t i) {
-    const Point& q = point_set.point(*(begin + std::ptrdiff_t(i)));
-    return internal::P3{{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
-  }, o);
+  return internal::recognize_objects_of_range(point_set, point_set.point_map(), internal::recognition_options(np));
 }
 
 } // namespace Point_set_object_recognition
