@@ -565,7 +565,7 @@ void add_points_segment_commands(CLI::App* points, std::function<int()>& run)
   auto g = std::make_shared<Recognize_options>();
   CLI::App* recognize = points->add_subcommand(
     "recognize", "Find and segment the objects of a scan of any size, tile by tile (ground estimate, background "
-                 "removal, localization, min-cut segmentation): the memory of one tile at a time.");
+                 "removal, localization, min-cut segmentation), tiles in parallel: the memory of one tile per thread.");
   recognize->add_option("input", g->input, "The scan (.ply, .xyz, .las, .bin), metres, z up")->required();
   recognize->add_option("-o,--output", g->output,
                         "The input's points in input order (.ply) with their properties, 'object' (the 0-based row "

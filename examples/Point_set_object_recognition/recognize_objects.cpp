@@ -45,7 +45,8 @@ int main(int argc, char** argv)
       scan.emplace_back(p.x, p.y, p.z);
   }
   const double tile = argc > 2 ? std::stod(argv[2]) : 100.0;
-  // Ground, background, normalized-cut localization and min-cut segmentation, one tile at a time.
+  // Ground, background, normalized-cut localization and min-cut segmentation, tile by tile (the
+  // tiles in parallel; the result does not depend on the number of threads).
   PSOR::Object_recognition_result r;
   try {
     r = PSOR::recognize_objects(scan, PSOR::parameters::tile_size(tile).tile_margin(10.0));

@@ -533,13 +533,26 @@ TEST(Segmentation, RecognitionSameForAnyThreadCount)
 {
   const Whole_scan& w = whole_scan();
   const auto one = PSOR::recognize_objects(w.points, PSOR::parameters::tile_size(50.0).number_of_threads(1));
-  const auto two = PSOR::recognize_objects(w.points, PSOR::parameters::tile_size(50.0).number_of_threads(2));
-  ASSERT_EQ(one.locations.size(), two.locations.size());
-  for(std::size_t k = 0; k < one.locations.size(); ++k) {
-    EXPECT_EQ(one.locations[k].position, two.locations[k].position);
-    EXPECT_EQ(one.objects[k].points, two.objects[k].points);
+  // The tiles run in parallel (2 threads, and as many as TBB chooses) and are merged in order.
+  for(std::size_t threads : {std::size_t(2), std::size_t(0)}) {
+    const auto two = PSOR::recognize_objects(w.points, PSOR::parameters::tile_size(50.0).number_of_threads(threads));
+    ASSERT_GT(two.tiles.size(), 2u);
+    ASSERT_EQ(one.tiles.size(), two.tiles.size());
+    for(std::size_t t = 0; t < one.tiles.size(); ++t) {
+      EXPECT_EQ(one.tiles[t].min, two.tiles[t].min);
+      EXPECT_EQ(one.tiles[t].number_of_points, two.tiles[t].number_of_points);
+      EXPECT_EQ(one.tiles[t].number_of_locations, two.tiles[t].number_of_locations);
+    }
+    ASSERT_EQ(one.locations.size(), two.locations.size());
+    for(std::size_t k = 0; k < one.locations.size(); ++k) {
+      EXPECT_EQ(one.locations[k].position, two.locations[k].position);
+      EXPECT_EQ(one.objects[k].points, two.objects[k].points);
+      EXPECT_EQ(one.objects[k].seed, two.objects[k].seed);
+    }
+    EXPECT_EQ(one.object_of_point, two.object_of_point);
+    EXPECT_EQ(one.kind, two.kind);
+    EXPECT_EQ(one.largest_tile, two.largest_tile);
   }
-  EXPECT_EQ(one.object_of_point, two.object_of_point);
   // The same from a CGAL::Point_set_3.
   CGAL::Point_set_3<Point> ps;
   for(const Point& p : w.points)

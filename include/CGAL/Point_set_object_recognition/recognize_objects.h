@@ -15,6 +15,7 @@
 #include <CGAL/Point_set_object_recognition/remove_background.h>
 #include <CGAL/Point_set_object_recognition/segment_objects.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/internal/Parallel.h>
 #include <CGAL/Shape_analysis/parameters.h>
 
 #include <algorithm>
@@ -64,6 +65,7 @@ namespace internal {
 struct Recognition_options
 {
   double tile = 100, margin = 10;
+  std::size_t threads = 0; // of the loop over the tiles
   bool origin_given = false;
   std::array<double, 2> origin{{0, 0}};
   Background_options background;
@@ -154,80 +156,105 @@ Object_recognition_result recognize_objects(std::size_t n, const PointAt& point,
       }
     return tiles; // none
   };
-  std::vector<std::uint32_t> local;
-  std::vector<P3> q, kept, foreground;
-  for(long ty = 0; ty < grid.ny; ++ty)
-    for(long tx = 0; tx < grid.nx; ++tx) {
-      const std::size_t t = std::size_t(ty * grid.nx + tx);
-      if(first[t] == first[t + 1])
-        continue;
-      const auto tile_start = std::chrono::steady_clock::now();
-      Scene_tile tile;
-      tile.min = {{grid.lo[0] + double(tx) * o.tile, grid.lo[1] + double(ty) * o.tile}};
-      tile.max = {{tile.min[0] + o.tile, tile.min[1] + o.tile}};
-      // Its points and those of its margin, in input order.
-      local.clear();
-      for(long j = (std::max)(0L, ty - reach); j <= (std::min)(grid.ny - 1, ty + reach); ++j)
-        for(long i = (std::max)(0L, tx - reach); i <= (std::min)(grid.nx - 1, tx + reach); ++i) {
-          const std::size_t u = std::size_t(j * grid.nx + i);
-          for(std::uint32_t k = first[u]; k < first[u + 1]; ++k) {
-            if(u == t) { // its own points (whatever the rounding)
-              local.push_back(order[k]);
-              continue;
-            }
-            const P3 a = point(order[k]);
-            if(a[0] >= tile.min[0] - o.margin && a[0] <= tile.max[0] + o.margin && a[1] >= tile.min[1] - o.margin &&
-               a[1] <= tile.max[1] + o.margin)
-              local.push_back(order[k]);
+  // The tiles run in parallel (each with its own buffers, freed when it ends, and its stages with
+  // `number_of_threads`); their locations and objects are merged in the order of the tiles, so
+  // that the result does not depend on the number of threads.
+  struct Tile_output
+  {
+    Scene_tile tile;
+    std::vector<Object_location> locations;
+    std::vector<Object_segmentation> objects; // point indices in the input
+  };
+  std::vector<std::size_t> busy; // the tiles that hold points
+  for(std::size_t t = 0; t < tiles; ++t)
+    if(first[t] != first[t + 1])
+      busy.push_back(t);
+  std::vector<Tile_output> outputs(busy.size());
+  CGAL::Shape_analysis::internal::Parallel_workspaces<char> parallel(o.threads);
+  parallel.for_each(0, busy.size(), [&](std::size_t b, char&) {
+    const std::size_t t = busy[b];
+    const long tx = long(t % std::size_t(grid.nx)), ty = long(t / std::size_t(grid.nx));
+    const auto tile_start = std::chrono::steady_clock::now();
+    Tile_output& out = outputs[b];
+    Scene_tile& tile = out.tile;
+    tile.min = {{grid.lo[0] + double(tx) * o.tile, grid.lo[1] + double(ty) * o.tile}};
+    tile.max = {{tile.min[0] + o.tile, tile.min[1] + o.tile}};
+    // Its points and those of its margin, in input order.
+    std::vector<std::uint32_t> local;
+    for(long j = (std::max)(0L, ty - reach); j <= (std::min)(grid.ny - 1, ty + reach); ++j)
+      for(long i = (std::max)(0L, tx - reach); i <= (std::min)(grid.nx - 1, tx + reach); ++i) {
+        const std::size_t u = std::size_t(j * grid.nx + i);
+        for(std::uint32_t k = first[u]; k < first[u + 1]; ++k) {
+          if(u == t) { // its own points (whatever the rounding)
+            local.push_back(order[k]);
+            continue;
           }
-        }
-      std::sort(local.begin(), local.end());
-      q.resize(local.size());
-      for(std::size_t k = 0; k < local.size(); ++k)
-        q[k] = point(local[k]);
-      tile.number_of_points = local.size();
-      r.largest_tile = (std::max)(r.largest_tile, local.size());
-
-      const Background_removal_result background = internal::remove_background(q, o.background);
-      for(std::size_t k = 0; k < local.size(); ++k)
-        if(grid.tile(q[k][0], q[k][1]) == t)
-          r.kind[local[k]] = background.kind[k];
-      foreground.resize(background.foreground.size());
-      for(std::size_t k = 0; k < foreground.size(); ++k)
-        foreground[k] = q[background.foreground[k]];
-      const Localization_result found = internal::locate_objects(foreground, o.localization);
-      std::vector<P3> own;
-      for(const Object_location& l : found.locations)
-        if(owner(l.position) == t) {
-          r.locations.push_back(l);
-          own.push_back(l.position);
-        }
-      tile.number_of_locations = own.size();
-      if(!own.empty()) {
-        const std::vector<std::size_t> above = points_above_ground(background);
-        kept.resize(above.size());
-        for(std::size_t k = 0; k < above.size(); ++k)
-          kept[k] = q[above[k]];
-        Segmentation_result s = internal::segment_objects(kept, own, o.segmentation);
-        for(Object_segmentation& object : s.objects) {
-          const std::size_t id = r.objects.size();
-          const P3& at = r.locations[id].position;
-          for(std::size_t& i : object.points) {
-            const P3& a = kept[i];
-            i = local[above[i]]; // increasing, as `above` and `local` are
-            std::size_t& claim = r.object_of_point[i];
-            if(claim == Object_recognition_result::no_object ||
-               horizontal_distance(a, at) < horizontal_distance(a, r.locations[claim].position))
-              claim = id;
-          }
-          if(object.seed != Object_segmentation::no_point)
-            object.seed = local[above[object.seed]];
-          r.objects.push_back(std::move(object));
+          const P3 a = point(order[k]);
+          if(a[0] >= tile.min[0] - o.margin && a[0] <= tile.max[0] + o.margin && a[1] >= tile.min[1] - o.margin &&
+             a[1] <= tile.max[1] + o.margin)
+            local.push_back(order[k]);
         }
       }
-      tile.seconds = since(tile_start);
-      r.tiles.push_back(tile);
+    std::sort(local.begin(), local.end());
+    std::vector<P3> q(local.size());
+    for(std::size_t k = 0; k < local.size(); ++k)
+      q[k] = point(local[k]);
+    tile.number_of_points = local.size();
+
+    const Background_removal_result background = internal::remove_background(q, o.background);
+    // The kinds of its own points (no other tile writes them).
+    for(std::size_t k = 0; k < local.size(); ++k)
+      if(grid.tile(q[k][0], q[k][1]) == t)
+        r.kind[local[k]] = background.kind[k];
+    std::vector<P3> foreground(background.foreground.size());
+    for(std::size_t k = 0; k < foreground.size(); ++k)
+      foreground[k] = q[background.foreground[k]];
+    const Localization_result found = internal::locate_objects(foreground, o.localization);
+    std::vector<P3> own;
+    for(const Object_location& l : found.locations)
+      if(owner(l.position) == t) {
+        out.locations.push_back(l);
+        own.push_back(l.position);
+      }
+    tile.number_of_locations = own.size();
+    if(!own.empty()) {
+      const std::vector<std::size_t> above = points_above_ground(background);
+      std::vector<P3> kept(above.size());
+      for(std::size_t k = 0; k < above.size(); ++k)
+        kept[k] = q[above[k]];
+      Segmentation_result s = internal::segment_objects(kept, own, o.segmentation);
+      for(Object_segmentation& object : s.objects) {
+        for(std::size_t& i : object.points)
+          i = local[above[i]]; // increasing, as `above` and `local` are
+        if(object.seed != Object_segmentation::no_point)
+          object.seed = local[above[object.seed]];
+      }
+      out.objects = std::move(s.objects);
     }
+    tile.seconds = since(tile_start);
+  });
+  // Merged in the order of the tiles: a point segmented by several objects goes to the one whose
+  // location is horizontally nearest (the first on a tie).
+  for(Tile_output& out : outputs) {
+    r.largest_tile = (std::max)(r.largest_tile, out.tile.number_of_points);
+    for(std::size_t k = 0; k < out.objects.size(); ++k) {
+      const std::size_t id = r.objects.size();
+      r.locations.push_back(out.locations[k]);
+      const P3& at = r.locations[id].position;
+      for(std::size_t i : out.objects[k].points) {
+        std::size_t& claim = r.object_of_point[i];
+        const P3 a = point(i);
+        if(claim == Object_recognition_result::no_object ||
+           horizontal_distance(a, at) < horizontal_distance(a, r.locations[claim].position))
+          claim = id;
+      }
+      r.objects.push_back(std::move(out.objects[k]));
+    }
+    for(std::size_t k = out.objects.size(); k < out.locations.size(); ++k)
+      r.locations.push_back(out.locations[k]);
+    r.tiles.push_back(out.tile);
+    out = Tile_output();
+  }
   // A point of a margin segmented by one tile may be ground for its own tile: an object holds no
   // ground point.
   for(std::size_t id = 0; id < r.objects.size(); ++id) {
@@ -276,6 +303,7 @@ Recognition_options recognition_options(const NamedParameters& np)
   const std::size_t threads = SAI::parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
   o.localization.method = SAI::parameter_value<Localization_method>(np, snp::localization_method_tag,
                                                                     Localization_method::NORMALIZED_CUT);
+  o.threads = threads;
   o.localization.threads = threads;
   o.segmentation = segmentation_options(
     parameters::segmentation_method(SAI::parameter_value<Segmentation_method>(
@@ -304,11 +332,12 @@ location, with all its surroundings when the margin is wider than the object plu
 segmentation (the largest background radius plus 2 m: 7 m for the automatic radius); since each
 tile locates objects in its own view, an object right at a border can still, rarely, be located
 on both sides or on neither. A point keeps the kind (`Point_kind`) that its own tile gives it,
-and an object keeps none of the points its own tiles find to be ground. The grids and graphs are those of one tile at a time:
-their memory does not grow with the scene, only the per-point results do; and localization by
-normalized cuts, whose time grows faster than the number of points, is applied to tiles of
-bounded size. The tiles are processed one after the other (each stage with `number_of_threads`),
-so the results are the same for any number of threads. Since a tile depends only on the points
+and an object keeps none of the points its own tiles find to be ground. The grids and graphs are
+those of the tiles being processed, at most `number_of_threads` of them at a time (each with its
+stages' threads inside): their memory does not grow with the scene, only the per-point results
+do; and localization by normalized cuts, whose time grows faster than the number of points, is
+applied to tiles of bounded size. The locations and objects of the tiles are merged in the
+order of the tiles, so the results are the same for any number of threads. Since a tile depends only on the points
 within its margin, separate processes (on a cluster) can each be given the points of a band of
 whole tiles plus those within `tile_margin` of it, with one `tile_origin` for all, and keep the
 tiles of their band: those tiles come out as in a single run with that origin (the points in the
@@ -365,7 +394,8 @@ same relative order).
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the largest number of threads of each stage (0: TBB's choice)}
+    \cgalParamDescription{the largest number of threads of the loop over the tiles and of each stage
+      within a tile (0: TBB's choice); the results do not depend on it}
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{`0`}
   \cgalParamNEnd
