@@ -17,6 +17,8 @@
 // objects with at least 10 scanned points; `recall_all_objects` against all of them).
 // JSON to stdout and to FILE; progress to stderr.
 
+#include "bench_util.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
@@ -40,10 +42,7 @@ typedef CGAL::Shape_analysis::internal::Json Json;
 namespace PSOR = CGAL::Point_set_object_recognition;
 namespace PSI = CGAL::Point_set_object_recognition::internal;
 
-double seconds_since(std::chrono::steady_clock::time_point t)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
+using bench_util::seconds_since;
 
 } // namespace
 
@@ -62,10 +61,8 @@ int main(int argc, char** argv)
     const std::string v = argv[++i];
     if(a == "--points" || a == "--seeds") {
       std::vector<std::size_t> list;
-      std::stringstream ss(v);
-      std::string item;
-      while(std::getline(ss, item, ','))
-        list.push_back(std::stoul(item));
+      for(unsigned long long k : bench_util::split_numbers(v))
+        list.push_back(std::size_t(k));
       if(a == "--points")
         sizes = list;
       else

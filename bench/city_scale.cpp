@@ -15,6 +15,8 @@
 // Each size is a street of 400 m per million points. The objects "seen" (for recall) are those
 // with at least 50 scanned points. JSON to stdout and to FILE; progress to stderr.
 
+#include "bench_util.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
@@ -37,10 +39,7 @@ typedef CGAL::Shape_analysis::internal::Json Json;
 namespace PSOR = CGAL::Point_set_object_recognition;
 namespace PSI = CGAL::Point_set_object_recognition::internal;
 
-double seconds_since(std::chrono::steady_clock::time_point t)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
+using bench_util::seconds_since;
 
 // The peak resident memory of this process since the last reset, in MiB (Linux; 0 elsewhere).
 double peak_resident_mib()
@@ -73,10 +72,8 @@ int main(int argc, char** argv)
     const std::string v = argv[++i];
     if(a == "--points") {
       sizes.clear();
-      std::stringstream ss(v);
-      std::string item;
-      while(std::getline(ss, item, ','))
-        sizes.push_back(std::stoul(item));
+      for(unsigned long long k : bench_util::split_numbers(v))
+        sizes.push_back(std::size_t(k));
     } else if(a == "--seed")
       seed = std::stoull(v);
     else if(a == "--tile-size")

@@ -61,10 +61,7 @@ namespace CS = CGAL::Consistent_segmentation;
 namespace SAI = CGAL::Shape_analysis::internal;
 namespace fs = std::filesystem;
 
-double seconds_since(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using bench_util::seconds_since;
 
 // The 1-minute load average (other work on the machine skews the timings), or -1.
 double load_average()

@@ -51,10 +51,7 @@ typedef CGAL::Shape_analysis::internal::Json Json;
 namespace CS = CGAL::Consistent_segmentation;
 namespace fs = std::filesystem;
 
-double seconds_since(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using bench_util::seconds_since;
 
 struct Method_result
 {

@@ -27,6 +27,8 @@
 // The defaults were tuned on seed 1 (--seeds 1); report on other seeds. JSON to stdout and FILE, progress and
 // tables to stderr.
 
+#include "bench_util.h"
+
 #include <CGAL/Point_set_object_recognition/internal/Scanned_objects.h>
 #include <CGAL/Point_set_object_recognition/internal/Segmentation_json.h>
 #include <CGAL/Point_set_object_recognition/locate_objects.h>
@@ -171,10 +173,8 @@ int main(int argc, char** argv)
     const std::string v = argv[++i];
     if(a == "--seeds") {
       seeds.clear();
-      std::stringstream ss(v);
-      std::string item;
-      while(std::getline(ss, item, ','))
-        seeds.push_back(std::stoull(item));
+      for(unsigned long long k : bench_util::split_numbers(v))
+        seeds.push_back(k);
     } else if(a == "--points")
       points = std::stoul(v);
     else if(a == "--length")

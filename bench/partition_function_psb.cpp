@@ -47,10 +47,7 @@ typedef CGAL::Shape_analysis::internal::Json Json;
 namespace RC = CGAL::Randomized_cuts;
 namespace CS = CGAL::Consistent_segmentation;
 
-double seconds_since(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using bench_util::seconds_since;
 
 // Labels of a face map as a vector in face-index order.
 template <typename Map>

@@ -7,6 +7,7 @@
 // What the benchmark programs on the Princeton Segmentation Benchmark share: reading its meshes
 // in file face order, selecting meshes on the command line, writing JSON reports.
 
+#include "bench_util.h"
 #include "psb.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -53,16 +54,7 @@ inline bool read_mesh(const std::filesystem::path& file, Mesh& mesh, std::string
   return !faces(mesh).empty();
 }
 
-inline std::vector<std::string> split(const std::string& list)
-{
-  std::vector<std::string> items;
-  std::stringstream in(list);
-  std::string item;
-  while(std::getline(in, item, ','))
-    if(!item.empty())
-      items.push_back(item);
-  return items;
-}
+using bench_util::split;
 
 inline std::string lower(std::string s)
 {

@@ -7,6 +7,8 @@
 // What the two symmetry benchmark programs share: the mesh type, the internal surface of a mesh,
 // timing, and reading the command line.
 
+#include "bench_util.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -30,26 +32,14 @@ typedef CGAL::Shape_analysis::internal::Json Json;
 namespace SYI = CGAL::Surface_mesh_symmetrization::internal;
 namespace SAI = CGAL::Shape_analysis::internal;
 
-inline double seconds_since(std::chrono::steady_clock::time_point t)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
+using bench_util::seconds_since;
 
 inline SYI::Surface surface_of(const Mesh& m)
 {
   return SYI::read_mesh(m, get(CGAL::vertex_point, m), SAI::Point_to_vector<Kernel>{Kernel()}, "bench").surface;
 }
 
-inline std::vector<std::string> split(const std::string& s)
-{
-  std::vector<std::string> r;
-  std::stringstream ss(s);
-  std::string item;
-  while(std::getline(ss, item, ','))
-    if(!item.empty())
-      r.push_back(item);
-  return r;
-}
+using bench_util::split;
 
 // Walks argv: `flag()` is the current option, `value()` the one after it (exits with status 2
 // when it is missing).

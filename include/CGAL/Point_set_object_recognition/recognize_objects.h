@@ -237,7 +237,8 @@ Object_recognition_result recognize_objects(std::size_t n, const PointAt& point,
   // location is horizontally nearest (the first on a tie).
   for(Tile_output& out : outputs) {
     r.largest_tile = (std::max)(r.largest_tile, out.tile.number_of_points);
-    for(std::size_t k = 0; k < out.objects.size(); ++k) {
+    // One object per location (segment_objects()): object k is that of location k.
+    for(std::size_t k = 0; k < out.locations.size(); ++k) {
       const std::size_t id = r.objects.size();
       r.locations.push_back(out.locations[k]);
       const P3& at = r.locations[id].position;
@@ -250,8 +251,6 @@ Object_recognition_result recognize_objects(std::size_t n, const PointAt& point,
       }
       r.objects.push_back(std::move(out.objects[k]));
     }
-    for(std::size_t k = out.objects.size(); k < out.locations.size(); ++k)
-      r.locations.push_back(out.locations[k]);
     r.tiles.push_back(out.tile);
     out = Tile_output();
   }
