@@ -21,10 +21,10 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
+#include <Shape_analysis_support/Urban_scene.h>
 #include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
-#include <CGAL/Shape_analysis/internal/Json.h>
+#include <Shape_analysis_support/Json.h>
 
 #include <algorithm>
 #include <chrono>
@@ -38,9 +38,10 @@
 namespace {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 Point;
-typedef CGAL::Shape_analysis::internal::Json Json;
+typedef SAS::Json Json;
 namespace PSOR = CGAL::Point_set_object_recognition;
 namespace PSI = CGAL::Point_set_object_recognition::internal;
+namespace SAS = CGAL::Shape_analysis_support;
 
 using bench_util::seconds_since;
 
@@ -79,15 +80,15 @@ int main(int argc, char** argv)
   Json runs = Json::array();
   for(std::uint64_t seed : seeds)
   for(std::size_t n : sizes) {
-    PSI::Urban_scene_options o;
+    SAS::Urban_scene_options o;
     o.seed = seed;
     o.target_points = n;
     o.street_length = (std::max)(100.0, 400.0 * double(n) / 1e6);
     o.number_of_threads = threads;
     std::cerr << n << " points, street of " << o.street_length << " m, seed " << seed << "...\n";
     const auto t0 = std::chrono::steady_clock::now();
-    const PSI::Urban_scene scene = PSI::make_urban_scene(o);
-    const PSI::Urban_scan scan = PSI::scan_urban_scene(scene, o);
+    const SAS::Urban_scene scene = SAS::make_urban_scene(o);
+    const SAS::Urban_scan scan = SAS::scan_urban_scene(scene, o);
     const double generation = seconds_since(t0);
     std::vector<Point> points;
     points.reserve(scan.points.size());
@@ -113,10 +114,10 @@ int main(int argc, char** argv)
       }
       ++background;
       background_kept += kept;
-      if(p.label == PSI::GROUND) {
+      if(p.label == SAS::GROUND) {
         ++ground;
         ground_removed += !kept;
-      } else if(p.label == PSI::BUILDING) {
+      } else if(p.label == SAS::BUILDING) {
         ++building;
         building_removed += !kept;
       }
@@ -191,7 +192,7 @@ int main(int argc, char** argv)
   result["benchmark"] = "background_removal";
   result["threads"] = threads;
   result["runs"] = runs;
-  const std::string text = result.dump();
+  const std::string text = SAS::to_text(result);
   std::cout << text << std::endl;
   if(!output.empty())
     std::ofstream(output) << text << std::endl;

@@ -19,9 +19,9 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
+#include <Shape_analysis_support/Urban_scene.h>
 #include <CGAL/Point_set_object_recognition/recognize_objects.h>
-#include <CGAL/Shape_analysis/internal/Json.h>
+#include <Shape_analysis_support/Json.h>
 
 #include <algorithm>
 #include <chrono>
@@ -35,9 +35,10 @@
 namespace {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 Point;
-typedef CGAL::Shape_analysis::internal::Json Json;
+typedef SAS::Json Json;
 namespace PSOR = CGAL::Point_set_object_recognition;
 namespace PSI = CGAL::Point_set_object_recognition::internal;
+namespace SAS = CGAL::Shape_analysis_support;
 
 using bench_util::seconds_since;
 
@@ -93,7 +94,7 @@ int main(int argc, char** argv)
   }
   Json runs = Json::array();
   for(std::size_t n : sizes) {
-    PSI::Urban_scene_options o;
+    SAS::Urban_scene_options o;
     o.seed = seed;
     o.target_points = n;
     o.street_length = (std::max)(100.0, 400.0 * double(n) / 1e6);
@@ -105,8 +106,8 @@ int main(int argc, char** argv)
     std::map<int, int> class_of_instance;
     std::vector<std::array<double, 2>> truth, seen;
     {
-      const PSI::Urban_scene scene = PSI::make_urban_scene(o);
-      const PSI::Urban_scan scan = PSI::scan_urban_scene(scene, o);
+      const SAS::Urban_scene scene = SAS::make_urban_scene(o);
+      const SAS::Urban_scan scan = SAS::scan_urban_scene(scene, o);
       points.reserve(scan.points.size());
       instance.reserve(scan.points.size());
       std::map<int, std::size_t> count;
@@ -186,7 +187,7 @@ int main(int argc, char** argv)
   result["seed"] = seed;
   result["threads"] = threads;
   result["runs"] = runs;
-  const std::string text = result.dump();
+  const std::string text = SAS::to_text(result);
   std::cout << text << std::endl;
   if(!output.empty())
     std::ofstream(output) << text << std::endl;

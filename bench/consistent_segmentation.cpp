@@ -37,8 +37,8 @@
 
 #include <CGAL/Consistent_segmentation/consistent_segmentation.h>
 #include <CGAL/Consistent_segmentation/hierarchical_segmentation.h>
-#include <CGAL/Shape_analysis/internal/Json.h>
-#include <CGAL/Shape_analysis/internal/Procedural_furniture.h>
+#include <Shape_analysis_support/Json.h>
+#include <Shape_analysis_support/Procedural_furniture.h>
 
 #include <algorithm>
 #include <chrono>
@@ -56,10 +56,11 @@ namespace {
 
 using psb::Mesh;
 typedef Mesh::Face_index Face;
-typedef CGAL::Shape_analysis::internal::Json Json;
+typedef SAS::Json Json;
 namespace CS = CGAL::Consistent_segmentation;
 namespace SAI = CGAL::Shape_analysis::internal;
 namespace fs = std::filesystem;
+namespace SAS = CGAL::Shape_analysis_support;
 
 using bench_util::seconds_since;
 
@@ -190,16 +191,16 @@ Json result_json(const CS::Consistent_segmentation_result& r)
 // ---------------------------------------------------------------------------------------------
 // Procedural furniture
 
-std::vector<Mesh> to_meshes(const std::vector<SAI::Furniture_model>& models)
+std::vector<Mesh> to_meshes(const std::vector<SAS::Furniture_model>& models)
 {
   std::vector<Mesh> meshes(models.size());
   for(std::size_t i = 0; i < models.size(); ++i)
-    SAI::fill_polygon_mesh(models[i].mesh, meshes[i]); // faces in triangle order
+    SAS::fill_polygon_mesh(models[i].mesh, meshes[i]); // faces in triangle order
   return meshes;
 }
 
 // Which part labels each segment id covers (area share over the set, each model counting 1).
-Json segment_labels_json(const std::vector<SAI::Furniture_model>& models,
+Json segment_labels_json(const std::vector<SAS::Furniture_model>& models,
                          const std::vector<std::vector<std::size_t>>& ids)
 {
   std::map<std::size_t, std::map<std::size_t, double>> overlap;
@@ -215,7 +216,7 @@ Json segment_labels_json(const std::vector<SAI::Furniture_model>& models,
   for(const auto& kv : overlap) {
     Json s = Json::object();
     for(const auto& lv : kv.second)
-      s[SAI::furniture_part_name(lv.first)] = lv.second;
+      s[SAS::furniture_part_name(lv.first)] = lv.second;
     j[std::to_string(kv.first)] = s;
   }
   return j;
@@ -235,13 +236,13 @@ Json furniture_part(const std::string& kind, std::size_t n, std::size_t segments
                     const std::vector<std::size_t>& thread_counts, std::size_t runs,
                     const Furniture_settings& s)
 {
-  SAI::Furniture_options options;
+  SAS::Furniture_options options;
   options.edge_length = s.edge_length;
   options.armrest_probability = 0.5;
   options.random_pose = true;
-  const std::vector<SAI::Furniture_model> models = kind == "chairs"
-                                                     ? SAI::procedural_chair_set(n, s.seed, options)
-                                                     : SAI::procedural_table_set(n, s.seed, options);
+  const std::vector<SAS::Furniture_model> models = kind == "chairs"
+                                                     ? SAS::procedural_chair_set(n, s.seed, options)
+                                                     : SAS::procedural_table_set(n, s.seed, options);
   std::vector<Mesh> meshes = to_meshes(models);
   std::size_t total = 0, smallest = std::size_t(-1), largest = 0, with_armrests = 0;
   for(const auto& m : models) {
@@ -290,7 +291,7 @@ Json furniture_part(const std::string& kind, std::size_t n, std::size_t segments
   }
   j["seconds"] = seconds;
   j["labels_identical_over_runs_and_thread_counts"] = identical;
-  const double accuracy = SAI::furniture_label_accuracy(models, reference.labels);
+  const double accuracy = SAS::furniture_label_accuracy(models, reference.labels);
   j["accuracy"] = accuracy;
   std::vector<double> per_model;
   for(const auto& l : reference.labels)
@@ -532,7 +533,7 @@ int main(int argc, char** argv)
   } catch(const std::exception& e) {
     report["error"] = e.what();
     std::cerr << "FAILED: " << e.what() << '\n';
-    std::cout << report.dump() << '\n';
+    std::cout << SAS::to_text(report) << '\n';
     publish();
     return EXIT_FAILURE;
   }
@@ -725,7 +726,7 @@ int main(int argc, char** argv)
     report["psb"] = j;
   }
 
-  std::cout << report.dump() << '\n';
+  std::cout << SAS::to_text(report) << '\n';
   publish();
   return EXIT_SUCCESS;
 }

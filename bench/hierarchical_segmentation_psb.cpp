@@ -21,7 +21,7 @@
 #include <CGAL/mesh_segmentation.h>
 
 #include <CGAL/Consistent_segmentation/hierarchical_segmentation.h>
-#include <CGAL/Shape_analysis/internal/Json.h>
+#include <Shape_analysis_support/Json.h>
 
 #include <algorithm>
 #include <cctype>
@@ -47,9 +47,10 @@ using psb::read_mesh;
 using psb::split;
 using psb::write_output;
 typedef Mesh::Face_index Face;
-typedef CGAL::Shape_analysis::internal::Json Json;
+typedef SAS::Json Json;
 namespace CS = CGAL::Consistent_segmentation;
 namespace fs = std::filesystem;
+namespace SAS = CGAL::Shape_analysis_support;
 
 using bench_util::seconds_since;
 
@@ -176,7 +177,7 @@ int main(int argc, char** argv)
   std::vector<psb::Mesh_entry> meshes = psb::select_meshes(psb_dir, classes, ids);
   if(meshes.empty()) {
     report["skipped"] = "no PSB mesh with segmentations matches the selection in " + psb_dir.string();
-    std::cout << report.dump() << '\n';
+    std::cout << SAS::to_text(report) << '\n';
     write_output(output, report);
     return EXIT_SUCCESS;
   }
@@ -370,7 +371,7 @@ int main(int argc, char** argv)
   }
 
   const Json final_report = summarize(true);
-  std::cout << final_report.dump() << '\n';
+  std::cout << SAS::to_text(final_report) << '\n';
   write_output(output, final_report);
   return EXIT_SUCCESS;
 }

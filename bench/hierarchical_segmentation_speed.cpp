@@ -21,7 +21,7 @@
 #include <CGAL/version.h>
 
 #include <CGAL/Consistent_segmentation/hierarchical_segmentation.h>
-#include <CGAL/Shape_analysis/internal/Json.h>
+#include <Shape_analysis_support/Json.h>
 
 #include <algorithm>
 #include <chrono>
@@ -40,8 +40,9 @@ namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 typedef Mesh::Face_index Face;
-typedef CGAL::Shape_analysis::internal::Json Json;
+typedef SAS::Json Json;
 namespace CS = CGAL::Consistent_segmentation;
+namespace SAS = CGAL::Shape_analysis_support;
 
 struct Timings
 {
@@ -244,7 +245,7 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
 
-  const std::string text = report.dump();
+  const std::string text = SAS::to_text(report);
   std::cout << text << '\n';
   if(!output.empty()) {
     std::ofstream out(output);

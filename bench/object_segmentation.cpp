@@ -29,11 +29,11 @@
 
 #include "bench_util.h"
 
-#include <CGAL/Point_set_object_recognition/internal/Scanned_objects.h>
-#include <CGAL/Point_set_object_recognition/internal/Segmentation_json.h>
+#include <Shape_analysis_support/Scanned_objects.h>
+#include <Shape_analysis_support/Segmentation_json.h>
 #include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/segment_objects.h>
-#include <CGAL/Shape_analysis/internal/Json.h>
+#include <Shape_analysis_support/Json.h>
 
 #ifdef SHAPE_ANALYSIS_BENCH_WITH_PCL
 #include <pcl/point_cloud.h>
@@ -53,9 +53,10 @@
 
 namespace {
 
-typedef CGAL::Shape_analysis::internal::Json Json;
+typedef SAS::Json Json;
 namespace PSOR = CGAL::Point_set_object_recognition;
 namespace PSI = CGAL::Point_set_object_recognition::internal;
+namespace SAS = CGAL::Shape_analysis_support;
 
 double quantile(std::vector<double> v, double q)
 {
@@ -65,9 +66,9 @@ double quantile(std::vector<double> v, double q)
   return v[std::size_t(q * double(v.size() - 1) + 0.5)];
 }
 
-std::string class_name(int c) { return PSI::object_class_name(c); }
+std::string class_name(int c) { return SAS::object_class_name(c); }
 
-Json evaluation_json(const PSOR::Segmentation_evaluation& e) { return PSI::segmentation_evaluation_json(e, class_name); }
+Json evaluation_json(const PSOR::Segmentation_evaluation& e) { return SAS::segmentation_evaluation_json(e, class_name); }
 
 // The parameters of a run: the defaults, or the values given (negative / zero / -1: default).
 struct Tuning
@@ -75,7 +76,7 @@ struct Tuning
   double weight = -1, sigma = -1, max_cut = -1, cell = -1;
   std::size_t neighbors = 0, graph_size = std::size_t(-1);
 
-  PSOR::Segmentation_result run(const PSI::Scanned_objects& s, const std::vector<std::array<double, 3>>& at,
+  PSOR::Segmentation_result run(const SAS::Scanned_objects& s, const std::vector<std::array<double, 3>>& at,
                                 PSOR::Segmentation_method method, double radius, std::size_t threads) const
   {
     const double c = cell >= 0 ? cell : 0.2;
@@ -97,16 +98,16 @@ struct Tuning
   static std::size_t default_graph_size() { return PSI::Segmentation_options().maximum_nodes; }
 };
 
-PSI::Scanned_objects make_street(std::uint64_t seed, std::size_t points, double length, std::size_t threads)
+SAS::Scanned_objects make_street(std::uint64_t seed, std::size_t points, double length, std::size_t threads)
 {
-  PSI::Urban_scene_options o;
+  SAS::Urban_scene_options o;
   o.seed = seed;
   o.target_points = points;
   o.street_length = length;
   o.number_of_threads = threads;
-  const PSI::Urban_scene scene = PSI::make_urban_scene(o);
-  const PSI::Urban_scan scan = PSI::scan_urban_scene(scene, o);
-  return PSI::scanned_objects(scene, scan);
+  const SAS::Urban_scene scene = SAS::make_urban_scene(o);
+  const SAS::Urban_scan scan = SAS::scan_urban_scene(scene, o);
+  return SAS::scanned_objects(scene, scan);
 }
 
 #ifdef SHAPE_ANALYSIS_BENCH_WITH_PCL
@@ -114,7 +115,7 @@ PSI::Scanned_objects make_street(std::uint64_t seed, std::size_t points, double 
 // same seed point, the same background radius; PCL's defaults of its tutorial otherwise
 // (sigma 0.25, 14 neighbours, source weight 0.8). Returns the indices (into s.points) and the
 // seconds of extract().
-std::vector<std::size_t> pcl_segment(const PSI::Scanned_objects& s, const std::array<double, 3>& at,
+std::vector<std::size_t> pcl_segment(const SAS::Scanned_objects& s, const std::array<double, 3>& at,
                                      std::size_t seed, double radius, double& seconds)
 {
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
@@ -235,7 +236,7 @@ int main(int argc, char** argv)
 
   for(const Street& st : streets) {
     std::cerr << "seed " << st.seed << ", " << st.points << " points, street of " << st.length << " m...\n";
-    const PSI::Scanned_objects s = make_street(st.seed, st.points, st.length, threads);
+    const SAS::Scanned_objects s = make_street(st.seed, st.points, st.length, threads);
     Json run = Json::object();
     run["seed"] = st.seed;
     run["scan_points"] = s.scan_points;
@@ -329,7 +330,7 @@ int main(int argc, char** argv)
       instance_offset += 100000;
 
       // Locations found by locate_objects() among the foreground of remove_background().
-      std::vector<PSI::Scanned_objects::Point> foreground;
+      std::vector<SAS::Scanned_objects::Point> foreground;
       {
         const PSOR::Background_removal_result b = PSOR::remove_background(s.points);
         for(std::size_t i : b.foreground)
@@ -431,7 +432,7 @@ int main(int argc, char** argv)
               << quantile(ours_pcl_amortized_ms, 0.5) << " ms median, speed-up " << amortized_speedup << "\n";
   }
 #endif
-  const std::string text = result.dump();
+  const std::string text = SAS::to_text(result);
   std::cout << text << std::endl;
   if(!output.empty())
     std::ofstream(output) << text << std::endl;

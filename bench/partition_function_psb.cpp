@@ -30,7 +30,7 @@
 #include <CGAL/Consistent_segmentation/hierarchical_segmentation.h>
 #include <CGAL/Randomized_cuts/partition_function.h>
 #include <CGAL/Randomized_cuts/segment_with_partition_function.h>
-#include <CGAL/Shape_analysis/internal/Json.h>
+#include <Shape_analysis_support/Json.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -43,9 +43,10 @@ namespace {
 using psb::Mesh;
 typedef Mesh::Face_index Face;
 typedef Mesh::Edge_index Edge;
-typedef CGAL::Shape_analysis::internal::Json Json;
+typedef SAS::Json Json;
 namespace RC = CGAL::Randomized_cuts;
 namespace CS = CGAL::Consistent_segmentation;
+namespace SAS = CGAL::Shape_analysis_support;
 
 using bench_util::seconds_since;
 
@@ -222,7 +223,7 @@ int main(int argc, char** argv)
   const std::vector<psb::Mesh_entry> meshes = psb::select_meshes(psb_dir, classes, ids);
   if(meshes.empty()) {
     report["skipped"] = "no PSB mesh with segmentations matches the selection in " + psb_dir.string();
-    std::cout << report.dump() << '\n';
+    std::cout << SAS::to_text(report) << '\n';
     psb::write_output(output, report);
     return EXIT_SUCCESS;
   }
@@ -429,7 +430,7 @@ int main(int argc, char** argv)
     psb::write_output(output, summarize(false));
   }
   const Json final_report = summarize(true);
-  std::cout << final_report.dump() << '\n';
+  std::cout << SAS::to_text(final_report) << '\n';
   psb::write_output(output, final_report);
   return EXIT_SUCCESS;
 }

@@ -28,7 +28,7 @@
 #include <CGAL/Shape_analysis/internal/Min_cut.h>
 #include <CGAL/Shape_analysis/internal/Random.h>
 #include <CGAL/Shape_analysis/internal/Shortest_paths.h>
-#include <CGAL/Shape_analysis/internal/Json.h>
+#include <Shape_analysis_support/Json.h>
 #include <CGAL/Shape_analysis/internal/Parallel.h>
 
 #include <boost/graph/adjacency_list.hpp>
@@ -49,9 +49,10 @@ namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 typedef Mesh::Edge_index Edge;
-typedef CGAL::Shape_analysis::internal::Json Json;
+typedef SAS::Json Json;
 namespace RC = CGAL::Randomized_cuts;
 namespace SMS = CGAL::Surface_mesh_simplification;
+namespace SAS = CGAL::Shape_analysis_support;
 
 double median(std::vector<double> s)
 {
@@ -321,7 +322,7 @@ int main(int argc, char** argv)
     report["armadillo"] = "cannot read " + armadillo;
   }
 
-  const std::string text = report.dump();
+  const std::string text = SAS::to_text(report);
   std::cout << text << '\n';
   if(!output.empty()) {
     std::ofstream out(output);

@@ -7,7 +7,7 @@
 // Reading the Princeton Segmentation Benchmark subset in ../shared/data/psb and scoring
 // segmentations against its human segmentations (Rand Index error, as the benchmark defines it).
 
-#include <CGAL/Shape_analysis/internal/Partition_agreement.h>
+#include <Shape_analysis_support/Partition_agreement.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -15,6 +15,7 @@
 #include <map>
 #include <string>
 #include <vector>
+namespace SAS = CGAL::Shape_analysis_support;
 
 namespace psb {
 
@@ -115,7 +116,7 @@ inline double rand_index_error(const std::vector<std::size_t>& a, const std::vec
 {
   if(a.size() != b.size() || a.size() < 2)
     return 1.0;
-  return 1.0 - CGAL::Shape_analysis::internal::rand_index(a, b);
+  return 1.0 - SAS::rand_index(a, b);
 }
 
 // Mean Rand Index error of `labels` against every human segmentation of the mesh.

@@ -16,7 +16,7 @@
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Shape_analysis/internal/Json.h>
+#include <Shape_analysis_support/Json.h>
 
 #include <cctype>
 #include <filesystem>
@@ -26,6 +26,7 @@
 #include <sstream>
 #include <string>
 #include <vector>
+namespace SAS = CGAL::Shape_analysis_support;
 
 namespace psb {
 
@@ -95,7 +96,7 @@ inline std::vector<Mesh_entry> select_meshes(const std::filesystem::path& dir,
 }
 
 // Writes `report` to `file` (through a temporary file, so that a reader never sees half of it).
-inline void write_output(const std::string& file, const CGAL::Shape_analysis::internal::Json& report)
+inline void write_output(const std::string& file, const SAS::Json& report)
 {
   namespace fs = std::filesystem;
   if(file.empty())
@@ -103,7 +104,7 @@ inline void write_output(const std::string& file, const CGAL::Shape_analysis::in
   const std::string tmp = file + ".tmp";
   {
     std::ofstream out(tmp);
-    out << report.dump() << '\n';
+    out << SAS::to_text(report) << '\n';
     if(!out) {
       std::cerr << "cannot write " << tmp << '\n';
       return;

@@ -31,7 +31,8 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <CGAL/Surface_mesh_symmetrization/detect_reflective_symmetries.h>
-#include <CGAL/Surface_mesh_symmetrization/internal/Procedural_symmetric_shapes.h>
+#include <Shape_analysis_support/Procedural_symmetric_shapes.h>
+#include <Shape_analysis_support/Symmetry_metrics.h>
 #include <CGAL/Surface_mesh_symmetrization/symmetrize.h>
 #include "symmetry_bench.h"
 
@@ -47,15 +48,10 @@ namespace {
 
 using namespace symmetry_bench;
 namespace SY = CGAL::Surface_mesh_symmetrization;
+namespace SAS = CGAL::Shape_analysis_support;
 typedef SY::Symmetry<Kernel> Symmetry;
-
-std::vector<SYI::Vector_3d> points_of(const Mesh& m)
-{
-  std::vector<SYI::Vector_3d> p;
-  for(auto v : vertices(m))
-    p.emplace_back(m.point(v).x(), m.point(v).y(), m.point(v).z());
-  return p;
-}
+typedef SAS::Symmetry_metrics<Point> Metrics;
+typedef Metrics::Vector_3d Vector_3d;
 
 double median(std::vector<double> s)
 {
@@ -77,10 +73,10 @@ Json run(const std::string& name, const Mesh& mesh, const Symmetry& symmetry, st
     r = SY::symmetrize(result, std::vector<Symmetry>{symmetry}, SY::parameters::number_of_threads(threads));
     seconds.push_back(seconds_since(start));
   }
-  const SYI::Surface surface = surface_of(mesh);
-  const SYI::Affine_3d t = SYI::affine_of(symmetry, "bench");
+  const Metrics metrics(mesh);
+  const std::vector<Vector_3d>& input = metrics.points();
   const auto naive_start = std::chrono::steady_clock::now();
-  const std::vector<SYI::Vector_3d> naive = SYI::naive_symmetrization(surface, t, threads);
+  const std::vector<Vector_3d> naive = metrics.naive_symmetrization(input, symmetry, threads);
   const double naive_seconds = seconds_since(naive_start);
   Json j = Json::object();
   j["mesh"] = name;
@@ -94,31 +90,30 @@ Json run(const std::string& name, const Mesh& mesh, const Symmetry& symmetry, st
   j["symmetry_error_before"] = r.symmetry_error_before;
   j["symmetry_error_after"] = r.symmetry_error_after;
   j["distortion"] = r.distortion;
-  j["edge_vector_distortion"] = SYI::edge_vector_distortion(surface, surface.points, points_of(result));
-  const double naive_error = SYI::symmetry_error(surface, naive, t, threads);
-  const double naive_distortion = SYI::edge_distortion(surface, surface.points, naive);
+  j["edge_vector_distortion"] = metrics.edge_vector_distortion(input, Metrics::positions_of(result));
+  const double naive_error = metrics.symmetry_error(naive, symmetry, threads);
+  const double naive_distortion = metrics.edge_distortion(input, naive);
   Json b = Json::object();
   b["seconds"] = naive_seconds;
   b["symmetry_error_after"] = naive_error;
   b["distortion"] = naive_distortion;
-  b["edge_vector_distortion"] = SYI::edge_vector_distortion(surface, surface.points, naive);
+  b["edge_vector_distortion"] = metrics.edge_vector_distortion(input, naive);
   j["naive_halfway"] = b;
   // Equal-error comparisons: the naive move repeated (each pass from the mirror points of the
   // last) until it is as symmetric as our result, and our result stopped at the error of one
   // naive pass.
   if(equal_error) {
-    SYI::Surface repeated = surface;
     Json it = Json::object();
     std::size_t passes = 0;
     double e = naive_error;
-    repeated.points = naive;
+    std::vector<Vector_3d> repeated = naive;
     for(passes = 1; passes < 100 && e > r.symmetry_error_after; ++passes) {
-      repeated.points = SYI::naive_symmetrization(repeated, t, threads);
-      e = SYI::symmetry_error(surface, repeated.points, t, threads);
+      repeated = metrics.naive_symmetrization(repeated, symmetry, threads);
+      e = metrics.symmetry_error(repeated, symmetry, threads);
     }
     it["passes"] = passes;
     it["symmetry_error_after"] = e;
-    it["distortion"] = SYI::edge_distortion(surface, surface.points, repeated.points);
+    it["distortion"] = metrics.edge_distortion(input, repeated);
     j["naive_repeated_to_our_error"] = it;
     Mesh stopped = mesh;
     const auto rs = SY::symmetrize(stopped, std::vector<Symmetry>{symmetry},
@@ -205,9 +200,9 @@ int main(int argc, char** argv)
   // The procedural blob: about 1,200 vertices, symmetric connectivity, warped.
   {
     std::cerr << "procedural blob (1,152 vertices), warp 0.005:\n";
-    SYI::Procedural_mesh blob = SYI::symmetric_blob(24, 50);
+    SAS::Procedural_mesh blob = SAS::symmetric_blob(24, 50);
     for(auto& p : blob.points)
-      p = SYI::asymmetric_warp(p, 0.005);
+      p = SAS::asymmetric_warp(p, 0.005);
     Mesh m;
     std::vector<Mesh::Vertex_index> v;
     for(const auto& p : blob.points)

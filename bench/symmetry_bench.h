@@ -4,16 +4,15 @@
 #ifndef CGAL_SHAPE_ANALYSIS_BENCH_SYMMETRY_BENCH_H
 #define CGAL_SHAPE_ANALYSIS_BENCH_SYMMETRY_BENCH_H
 
-// What the two symmetry benchmark programs share: the mesh type, the internal surface of a mesh,
-// timing, and reading the command line.
+// What the two symmetry benchmark programs share: the mesh type, timing, reading the command line
+// and writing the report.
 
 #include "bench_util.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <CGAL/Surface_mesh_symmetrization/internal/Symmetry_geometry.h>
-#include <CGAL/Shape_analysis/internal/Json.h>
+#include <Shape_analysis_support/Json.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -28,17 +27,11 @@ namespace symmetry_bench {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
-typedef CGAL::Shape_analysis::internal::Json Json;
-namespace SYI = CGAL::Surface_mesh_symmetrization::internal;
 namespace SAI = CGAL::Shape_analysis::internal;
+namespace SAS = CGAL::Shape_analysis_support;
+typedef SAS::Json Json;
 
 using bench_util::seconds_since;
-
-inline SYI::Surface surface_of(const Mesh& m)
-{
-  return SYI::read_mesh(m, get(CGAL::vertex_point, m), SAI::Point_to_vector<Kernel>{Kernel()}, "bench").surface;
-}
-
 using bench_util::split;
 
 // Walks argv: `flag()` is the current option, `value()` the one after it (exits with status 2
@@ -66,7 +59,7 @@ private:
 
 inline void write_report(const Json& result, const std::string& output)
 {
-  const std::string text = result.dump();
+  const std::string text = SAS::to_text(result);
   std::cout << text << std::endl;
   if(!output.empty())
     std::ofstream(output) << text << std::endl;

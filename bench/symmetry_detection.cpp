@@ -40,6 +40,12 @@ using namespace symmetry_bench;
 namespace SMS = CGAL::Surface_mesh_symmetrization;
 namespace SMI = CGAL::Surface_mesh_symmetrization::internal;
 
+// The exhaustive search and the plane's score work on the detection's own arrays.
+SMI::Surface surface_of(const Mesh& m)
+{
+  return SMI::read_mesh(m, get(CGAL::vertex_point, m), SAI::Point_to_vector<Kernel>{Kernel()}, "bench").surface;
+}
+
 // A random rotation (uniform axis, angle in [0, pi)) and a translation of up to one diagonal.
 CGAL::Aff_transformation_3<Kernel> random_motion(std::uint64_t seed, double diagonal)
 {

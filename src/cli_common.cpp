@@ -538,7 +538,7 @@ void stage_report(Output_files& outputs, const std::string& path, Json report, d
   for(const auto& o : named_outputs)
     out[o.first] = o.second.empty() ? Json() : Json(o.second);
   report["outputs"] = out;
-  outputs.stage(path, false, [&](std::ostream& s) { s << report.dump() << '\n'; });
+  outputs.stage(path, false, [&](std::ostream& s) { s << SAS::to_text(report) << '\n'; });
 }
 
 Progress::Progress(std::string command, bool quiet, bool verbose)

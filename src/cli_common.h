@@ -9,7 +9,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Shape_analysis/internal/Json.h>
+#include <Shape_analysis_support/Json.h>
 
 #include <CLI/CLI.hpp>
 
@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+namespace SAS = CGAL::Shape_analysis_support;
 
 namespace CGAL {
 namespace Point_set_object_recognition {
@@ -31,7 +32,7 @@ namespace shape_analysis_cli {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point_3;
 typedef CGAL::Surface_mesh<Point_3> Mesh;
-using CGAL::Shape_analysis::internal::Json;
+using SAS::Json;
 
 // An error the tool reports in one line and exits non-zero for (1: the job failed).
 struct Cli_error : std::runtime_error

@@ -15,7 +15,7 @@
 
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO/PLY.h>
-#include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
+#include <Shape_analysis_support/Urban_scene.h>
 #include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/read_point_set.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
@@ -25,7 +25,6 @@
 #include <fstream>
 #include <iomanip>
 #include <map>
-#include <regex>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -36,6 +35,7 @@ namespace {
 
 namespace PSI = CGAL::Point_set_object_recognition::internal;
 namespace PSOR = CGAL::Point_set_object_recognition;
+namespace SAS = CGAL::Shape_analysis_support;
 
 struct Scene_options
 {
@@ -53,13 +53,13 @@ struct Scene_options
 
 // The truth: per object its id, class, location, height, bounding box and the number of points
 // the scanner put on it (`scanned_points`: an object without points cannot be located).
-Json objects_json(const std::vector<PSI::Urban_object>& objects, const std::map<int, std::size_t>& scanned)
+Json objects_json(const std::vector<SAS::Urban_object>& objects, const std::map<int, std::size_t>& scanned)
 {
   Json list = Json::array();
-  for(const PSI::Urban_object& b : objects) {
+  for(const SAS::Urban_object& b : objects) {
     Json o = Json::object();
     o["id"] = b.id;
-    o["class"] = PSI::object_class_name(b.object_class);
+    o["class"] = SAS::object_class_name(b.object_class);
     o["class_id"] = b.object_class;
     o["location"] = Json(std::vector<double>{b.x, b.y, b.z});
     o["height"] = b.height;
@@ -91,7 +91,7 @@ int run_scene(const Scene_options& o)
   if(!(o.noise >= 0 && o.noise <= 1))
     throw Usage_error("--noise must be between 0 and 1 m");
 
-  PSI::Urban_scene_options so;
+  SAS::Urban_scene_options so;
   so.seed = o.seed;
   so.street_length = o.length;
   so.objects_per_100m = o.objects_per_100m;
@@ -102,16 +102,16 @@ int run_scene(const Scene_options& o)
 
   Stopwatch work;
   progress.stage("building a street of " + std::to_string(int(o.length)) + " m");
-  const PSI::Urban_scene scene = PSI::make_urban_scene(so);
+  const SAS::Urban_scene scene = SAS::make_urban_scene(so);
   progress.stage("scanning " + std::to_string(scene.objects.size()) + " objects, " +
                  std::to_string(scene.triangles.size()) + " triangles");
-  const PSI::Urban_scan scan = PSI::scan_urban_scene(scene, so);
+  const SAS::Urban_scan scan = SAS::scan_urban_scene(scene, so);
   const double seconds = work.seconds();
 
   progress.stage("writing " + std::to_string(scan.points.size()) + " points");
   outputs.stage(o.output, true, [&](std::ostream& out) {
     CGAL::Point_set_3<Point_3> ps;
-    PSI::fill_point_set(scan, ps, true);
+    SAS::fill_point_set(scan, ps, true);
     // Colours by class, so that MeshLab shows them; CloudCompare also shows the scalar fields.
     auto red = ps.add_property_map<unsigned char>("red", 0).first;
     auto green = ps.add_property_map<unsigned char>("green", 0).first;
@@ -129,14 +129,14 @@ int run_scene(const Scene_options& o)
   });
   std::size_t object_points = 0;
   std::map<int, std::size_t> scanned;
-  for(const PSI::Urban_scan_point& p : scan.points)
+  for(const SAS::Urban_scan_point& p : scan.points)
     if(p.instance > 0) {
       ++object_points;
       ++scanned[p.instance];
     }
   if(!o.objects.empty())
     outputs.stage(o.objects, false,
-                  [&](std::ostream& out) { out << objects_json(scene.objects, scanned).dump() << "\n"; });
+                  [&](std::ostream& out) { out << SAS::to_text(objects_json(scene.objects, scanned)) << "\n"; });
   if(!o.report.empty()) {
     Json report = Json::object();
     report["command"] = "points " + o.command;
@@ -359,7 +359,7 @@ int run_locate(const Locate_options& o)
       j["height"] = l.height;
       list.push_back(j);
     }
-    out << list.dump() << "\n";
+    out << SAS::to_text(list) << "\n";
   });
   // Precision against every true object; recall against the objects that received at least
   // --truth-points points from the scanner (all of them when the truth does not say).
@@ -449,43 +449,48 @@ std::vector<Truth_object> read_truth_objects(const std::string& path)
   std::ifstream in(path);
   if(!in)
     throw Cli_error("cannot open " + path);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string content = text.str();
-  const std::regex id("\"id\"\\s*:\\s*(-?[0-9]+)"), class_id("\"class_id\"\\s*:\\s*(-?[0-9]+)"),
-    name("\"class\"\\s*:\\s*\"([^\"]*)\""), scanned("\"scanned_points\"\\s*:\\s*([0-9]+)"),
-    location("\"location\"\\s*:\\s*\\[\\s*([-+0-9.eE]+)\\s*,\\s*([-+0-9.eE]+)(\\s*,\\s*([-+0-9.eE]+))?");
+  Json file;
+  try {
+    file = Json::parse(in);
+  } catch(const Json::parse_error& e) {
+    throw Cli_error(path + ": not JSON (" + e.what() + ")");
+  }
+  if(!file.is_array())
+    throw Cli_error(path + ": not a JSON array of objects (write it with 'points generate --truth')");
   std::vector<Truth_object> r;
-  for(std::size_t start = content.find('{'); start != std::string::npos;) {
-    const std::size_t end = content.find('}', start);
-    if(end == std::string::npos)
-      throw Cli_error(path + ": an object is not closed");
-    const std::string object = content.substr(start, end - start);
-    std::smatch m;
+  for(const Json& object : file) {
     Truth_object t;
     t.id = int(r.size());
-    try {
-      if(std::regex_search(object, m, id))
-        t.id = std::stoi(m[1].str());
-      if(!std::regex_search(object, m, location))
-        throw Cli_error(path + ": object " + std::to_string(t.id) + " has no \"location\": [x, y, z]");
-      t.location = {std::stod(m[1].str()), std::stod(m[2].str()), m[4].matched ? std::stod(m[4].str()) : 0.0};
-      if(std::regex_search(object, m, class_id))
-        t.object_class = std::stoi(m[1].str());
-      if(std::regex_search(object, m, name))
-        t.name = m[1].str();
-      if(std::regex_search(object, m, scanned))
-        t.scanned_points = std::stol(m[1].str());
-    } catch(const std::invalid_argument&) {
-      throw Cli_error(path + ": a number of object " + std::to_string(t.id) + " cannot be read");
-    } catch(const std::out_of_range&) {
-      throw Cli_error(path + ": a number of object " + std::to_string(t.id) + " is out of range");
+    const std::string which = "object " + std::to_string(r.size());
+    // A member of the wanted type, or the default when it is absent.
+    const auto member = [&](const char* key, auto fallback) {
+      const auto it = object.find(key);
+      if(it == object.end() || it->is_null())
+        return fallback;
+      try {
+        return it->template get<decltype(fallback)>();
+      } catch(const Json::exception&) {
+        throw Cli_error(path + ": \"" + key + "\" of " + which + " is not a number or name of the right kind");
+      }
+    };
+    if(!object.is_object())
+      throw Cli_error(path + ": " + which + " is not a JSON object");
+    t.id = member("id", t.id);
+    t.object_class = member("class_id", 0);
+    t.name = member("class", std::string());
+    t.scanned_points = member("scanned_points", -1L);
+    const auto location = object.find("location");
+    if(location == object.end() || !location->is_array() || location->size() < 2 || location->size() > 3)
+      throw Cli_error(path + ": object " + std::to_string(t.id) + " has no \"location\": [x, y, z]");
+    for(std::size_t k = 0; k < location->size(); ++k) {
+      if(!(*location)[k].is_number())
+        throw Cli_error(path + ": a coordinate of object " + std::to_string(t.id) + " is not a number");
+      t.location[k] = (*location)[k].get<double>();
+      if(!std::isfinite(t.location[k]))
+        throw Cli_error(path + ": a coordinate of object " + std::to_string(t.id) + " is not finite");
     }
     r.push_back(t);
-    start = content.find('{', end);
   }
-  if(r.empty() && content.find_first_not_of(" \t\r\n[]") != std::string::npos)
-    throw Cli_error(path + ": no \"location\": [x, y, ...] in it (write it with 'points generate --truth')");
   return r;
 }
 

@@ -16,8 +16,8 @@
 
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO/PLY.h>
-#include <CGAL/Point_set_object_recognition/internal/Segmentation_json.h>
-#include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
+#include <Shape_analysis_support/Segmentation_json.h>
+#include <Shape_analysis_support/Urban_scene.h>
 #include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/read_point_set.h>
 #include <CGAL/Point_set_object_recognition/recognize_objects.h>
@@ -39,6 +39,7 @@ namespace {
 
 namespace PSOR = CGAL::Point_set_object_recognition;
 namespace PSI = CGAL::Point_set_object_recognition::internal;
+namespace SAS = CGAL::Shape_analysis_support;
 
 // A location of locations.csv; z is NaN when the file leaves it empty.
 typedef std::array<double, 3> Location;
@@ -439,7 +440,7 @@ int run_evaluate(const Evaluate_options& o)
   std::map<int, std::string> class_names;
   for(const Truth_object& t : truth) {
     class_of_instance[t.id] = t.object_class;
-    class_names[t.object_class] = t.name.empty() ? PSI::object_class_name(t.object_class) : t.name;
+    class_names[t.object_class] = t.name.empty() ? SAS::object_class_name(t.object_class) : t.name;
   }
   const auto name_of = [&](int c) {
     const auto it = class_names.find(c);
@@ -513,7 +514,7 @@ int run_evaluate(const Evaluate_options& o)
     const PSOR::Segmentation_evaluation e = PSOR::evaluate_labelling(object, instance, class_of_instance);
     std::cout << "Segmentation (points of the matched object, ground left out), as the thesis' table 4.2:\n";
     PSOR::print_segmentation_table(std::cout, e, name_of);
-    Json j = PSI::segmentation_evaluation_json(e, name_of);
+    Json j = SAS::segmentation_evaluation_json(e, name_of);
     Json list = Json::array();
     for(const auto& s : e.objects) {
       Json js = Json::object();

@@ -10,7 +10,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Point_set_3.h>
 
-#include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
+#include <Shape_analysis_support/Urban_scene.h>
 #include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/read_point_set.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
@@ -22,6 +22,7 @@
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
 namespace PSOR = CGAL::Point_set_object_recognition;
+namespace SAS = CGAL::Shape_analysis_support;
 
 int main(int argc, char** argv)
 {
@@ -33,11 +34,11 @@ int main(int argc, char** argv)
       scan.push_back(ps.point(i));
   } else { // a generated street of 60 m
     namespace PSI = CGAL::Point_set_object_recognition::internal;
-    PSI::Urban_scene_options o;
+    SAS::Urban_scene_options o;
     o.street_length = 60;
     o.target_points = 200000;
-    const PSI::Urban_scene scene = PSI::make_urban_scene(o);
-    for(const auto& p : PSI::scan_urban_scene(scene, o).points)
+    const SAS::Urban_scene scene = SAS::make_urban_scene(o);
+    for(const auto& p : SAS::scan_urban_scene(scene, o).points)
       scan.emplace_back(p.x, p.y, p.z);
   }
   // 1. The ground goes (objects touching walls stay with the walls: the cut separates them).

@@ -16,7 +16,7 @@
 
 #include <CGAL/Consistent_segmentation/consistent_segmentation.h>
 #include <CGAL/Consistent_segmentation/hierarchical_segmentation.h>
-#include <CGAL/Shape_analysis/internal/Procedural_furniture.h>
+#include <Shape_analysis_support/Procedural_furniture.h>
 
 #include <gtest/gtest.h>
 
@@ -41,6 +41,7 @@ typedef Mesh::Property_map<face_descriptor, long long> Label_map;
 namespace CS = CGAL::Consistent_segmentation;
 namespace SAI = CGAL::Shape_analysis::internal;
 namespace PMP = CGAL::Polygon_mesh_processing;
+namespace SAS = CGAL::Shape_analysis_support;
 using SAI::Vector_3d;
 
 const std::size_t unset = std::numeric_limits<std::size_t>::max();
@@ -49,20 +50,20 @@ const std::size_t unset = std::numeric_limits<std::size_t>::max();
 // Helpers
 
 // Coarser boxes than the benchmark's (about 1,000 faces per chair) keep the tests fast.
-SAI::Furniture_options furniture(bool random_pose, double armrest_probability = 0.5)
+SAS::Furniture_options furniture(bool random_pose, double armrest_probability = 0.5)
 {
-  SAI::Furniture_options o;
+  SAS::Furniture_options o;
   o.edge_length = 0.07;
   o.random_pose = random_pose;
   o.armrest_probability = armrest_probability;
   return o;
 }
 
-std::vector<Mesh> to_meshes(const std::vector<SAI::Furniture_model>& models)
+std::vector<Mesh> to_meshes(const std::vector<SAS::Furniture_model>& models)
 {
   std::vector<Mesh> meshes(models.size());
   for(std::size_t i = 0; i < models.size(); ++i)
-    SAI::fill_polygon_mesh(models[i].mesh, meshes[i]);
+    SAS::fill_polygon_mesh(models[i].mesh, meshes[i]);
   return meshes;
 }
 
@@ -86,7 +87,7 @@ std::vector<std::vector<std::size_t>> read_ids(const std::vector<Mesh>& meshes, 
 
 // Co-segments `models` with `np`; returns the ids per mesh and face.
 template <typename NP>
-std::vector<std::vector<std::size_t>> cosegment(const std::vector<SAI::Furniture_model>& models, const NP& np,
+std::vector<std::vector<std::size_t>> cosegment(const std::vector<SAS::Furniture_model>& models, const NP& np,
                                                 CS::Consistent_segmentation_result* result = nullptr)
 {
   std::vector<Mesh> meshes = to_meshes(models);
@@ -122,12 +123,12 @@ void expect_consistent_result(const std::vector<std::vector<std::size_t>>& ids,
 
 // Fraction of the area (each model counting as 1) of `models[i]` for i in `which` whose id equals
 // its true label.
-double direct_accuracy(const std::vector<SAI::Furniture_model>& models,
+double direct_accuracy(const std::vector<SAS::Furniture_model>& models,
                        const std::vector<std::vector<std::size_t>>& ids, const std::vector<std::size_t>& which)
 {
   double right = 0;
   for(std::size_t i : which) {
-    const SAI::Labelled_triangle_mesh& m = models[i].mesh;
+    const SAS::Labelled_triangle_mesh& m = models[i].mesh;
     double total = 0, good = 0;
     for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
       total += m.area(f);
@@ -151,7 +152,7 @@ void expect_bad_input(F f, const std::string& words)
 }
 
 // The majority label (by area over the set) of every segment id.
-std::map<std::size_t, std::size_t> majority_labels(const std::vector<SAI::Furniture_model>& models,
+std::map<std::size_t, std::size_t> majority_labels(const std::vector<SAS::Furniture_model>& models,
                                                    const std::vector<std::vector<std::size_t>>& ids)
 {
   std::map<std::size_t, std::map<std::size_t, double>> overlap;
@@ -171,7 +172,7 @@ std::map<std::size_t, std::size_t> majority_labels(const std::vector<SAI::Furnit
 
 TEST(Measure, AccuracyRejectsWrongSegmentations)
 {
-  const auto models = SAI::procedural_chair_set(4, 3, furniture(false));
+  const auto models = SAS::procedural_chair_set(4, 3, furniture(false));
   std::vector<std::vector<std::size_t>> truth(models.size()), one(models.size()), by_piece(models.size()),
     swapped(models.size());
   for(std::size_t i = 0; i < models.size(); ++i) {
@@ -181,12 +182,12 @@ TEST(Measure, AccuracyRejectsWrongSegmentations)
     swapped[i] = truth[i];
     if(i % 2 == 1) // the seat and back ids exchanged in every other chair
       for(std::size_t& l : swapped[i])
-        l = l == SAI::SEAT ? SAI::BACK : l == SAI::BACK ? SAI::SEAT : l;
+        l = l == SAS::SEAT ? SAS::BACK : l == SAS::BACK ? SAS::SEAT : l;
   }
-  EXPECT_DOUBLE_EQ(SAI::furniture_label_accuracy(models, truth), 1.0);
-  EXPECT_DOUBLE_EQ(SAI::furniture_label_accuracy(models, by_piece), 1.0);
-  EXPECT_LT(SAI::furniture_label_accuracy(models, one), 0.6);
-  EXPECT_LT(SAI::furniture_label_accuracy(models, swapped), 0.85);
+  EXPECT_DOUBLE_EQ(SAS::furniture_label_accuracy(models, truth), 1.0);
+  EXPECT_DOUBLE_EQ(SAS::furniture_label_accuracy(models, by_piece), 1.0);
+  EXPECT_LT(SAS::furniture_label_accuracy(models, one), 0.6);
+  EXPECT_LT(SAS::furniture_label_accuracy(models, swapped), 0.85);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -194,7 +195,7 @@ TEST(Measure, AccuracyRejectsWrongSegmentations)
 
 TEST(ChairSet, PartsAgreeAcrossTheSetInRandomPoses)
 {
-  const auto models = SAI::procedural_chair_set(10, 11, furniture(true));
+  const auto models = SAS::procedural_chair_set(10, 11, furniture(true));
   CS::Consistent_segmentation_result r;
   const auto ids = cosegment(models, CS::parameters::number_of_segments(8).random_seed(5), &r);
   expect_consistent_result(ids, r);
@@ -205,7 +206,7 @@ TEST(ChairSet, PartsAgreeAcrossTheSetInRandomPoses)
   EXPECT_LE(r.number_of_aligned_pairs, 10u * 9u / 2u);
   EXPECT_GT(r.number_of_correspondences, 20u * 1500u);
   EXPECT_LT(r.mean_alignment_rms, 0.05);
-  const double accuracy = SAI::furniture_label_accuracy(models, ids);
+  const double accuracy = SAS::furniture_label_accuracy(models, ids);
   EXPECT_GE(accuracy, 0.9);
 
   // Each mesh segmented alone has ids that mean nothing across the set: the same global matching
@@ -213,18 +214,18 @@ TEST(ChairSet, PartsAgreeAcrossTheSetInRandomPoses)
   std::vector<std::vector<std::size_t>> alone(models.size());
   for(std::size_t i = 0; i < models.size(); ++i) {
     Mesh m;
-    SAI::fill_polygon_mesh(models[i].mesh, m);
+    SAS::fill_polygon_mesh(models[i].mesh, m);
     auto map = m.add_property_map<face_descriptor, std::size_t>("f:alone", unset).first;
     CS::hierarchical_segmentation(m, map, CS::parameters::number_of_segments(4));
     for(auto f : faces(m))
       alone[i].push_back(map[f]);
   }
-  EXPECT_LT(SAI::furniture_label_accuracy(models, alone), accuracy - 0.1);
+  EXPECT_LT(SAS::furniture_label_accuracy(models, alone), accuracy - 0.1);
 }
 
 TEST(ChairSet, ArmrestsGetSegmentsOfTheirOwn)
 {
-  const auto models = SAI::procedural_chair_set(10, 11, furniture(true));
+  const auto models = SAS::procedural_chair_set(10, 11, furniture(true));
   std::size_t with_arms = 0;
   for(const auto& m : models)
     with_arms += m.has_armrests ? 1 : 0;
@@ -238,7 +239,7 @@ TEST(ChairSet, ArmrestsGetSegmentsOfTheirOwn)
   const auto majority = majority_labels(models, ids);
   std::size_t armrest_segments = 0;
   for(const auto& kv : majority) {
-    if(kv.second != SAI::ARMREST)
+    if(kv.second != SAS::ARMREST)
       continue;
     ++armrest_segments;
     // An armrest segment lies (nearly) only in chairs with armrests.
@@ -256,9 +257,9 @@ TEST(ChairSet, ArmrestsGetSegmentsOfTheirOwn)
       continue;
     double arm = 0, found = 0;
     for(std::size_t f = 0; f < ids[i].size(); ++f)
-      if(models[i].mesh.labels[f] == SAI::ARMREST) {
+      if(models[i].mesh.labels[f] == SAS::ARMREST) {
         arm += models[i].mesh.area(f);
-        if(majority.at(ids[i][f]) == SAI::ARMREST)
+        if(majority.at(ids[i][f]) == SAS::ARMREST)
           found += models[i].mesh.area(f);
       }
     EXPECT_GT(found, 0.8 * arm) << "chair " << i;
@@ -269,12 +270,12 @@ TEST(TableSet, TopsAndLegs)
 {
   // A quarter of the tables stand on a central pedestal: there the top is split where the legs of
   // the four-legged ones are, so only the four-legged ones must be (nearly) perfect.
-  const auto models = SAI::procedural_table_set(8, 21, furniture(true));
+  const auto models = SAS::procedural_table_set(8, 21, furniture(true));
   CS::Consistent_segmentation_result r;
   const auto ids = cosegment(models, CS::parameters::number_of_segments(5).random_seed(2), &r);
   expect_consistent_result(ids, r);
-  EXPECT_GE(SAI::furniture_label_accuracy(models, ids), 0.8);
-  std::vector<SAI::Furniture_model> four_legged;
+  EXPECT_GE(SAS::furniture_label_accuracy(models, ids), 0.8);
+  std::vector<SAS::Furniture_model> four_legged;
   std::vector<std::vector<std::size_t>> four_legged_ids;
   for(std::size_t i = 0; i < models.size(); ++i)
     if(models[i].number_of_pieces == 5) {
@@ -282,12 +283,12 @@ TEST(TableSet, TopsAndLegs)
       four_legged_ids.push_back(ids[i]);
     }
   ASSERT_GE(four_legged.size(), 4u);
-  EXPECT_GE(SAI::furniture_label_accuracy(four_legged, four_legged_ids), 0.97);
+  EXPECT_GE(SAS::furniture_label_accuracy(four_legged, four_legged_ids), 0.97);
 }
 
 TEST(ChairSet, LargeSetsAlignOnlyWithPartners)
 {
-  const auto models = SAI::procedural_chair_set(14, 4, furniture(true));
+  const auto models = SAS::procedural_chair_set(14, 4, furniture(true));
   CS::Consistent_segmentation_result r;
   const auto ids =
     cosegment(models, CS::parameters::number_of_segments(8).number_of_partners(4).number_of_points(500), &r);
@@ -301,12 +302,12 @@ TEST(ChairSet, LargeSetsAlignOnlyWithPartners)
   EXPECT_GE(two.number_of_aligned_pairs, 28u);
   EXPECT_LE(two.number_of_aligned_pairs, 56u);
   EXPECT_LT(two.number_of_correspondences, r.number_of_correspondences);
-  EXPECT_GE(SAI::furniture_label_accuracy(models, ids), 0.85);
+  EXPECT_GE(SAS::furniture_label_accuracy(models, ids), 0.85);
 }
 
 TEST(ChairSet, SameResultForAnyNumberOfThreadsAndSeedMatters)
 {
-  const auto models = SAI::procedural_chair_set(6, 8, furniture(true));
+  const auto models = SAS::procedural_chair_set(6, 8, furniture(true));
   const auto one = cosegment(models, CS::parameters::number_of_segments(6).random_seed(9).number_of_threads(1));
   const auto two = cosegment(models, CS::parameters::number_of_segments(6).random_seed(9).number_of_threads(2));
   const auto all = cosegment(models, CS::parameters::number_of_segments(6).random_seed(9));
@@ -320,7 +321,7 @@ TEST(ChairSet, SameResultForAnyNumberOfThreadsAndSeedMatters)
 
 TEST(ChairSet, SingleMeshAndProgress)
 {
-  const auto models = SAI::procedural_chair_set(1, 8, furniture(false));
+  const auto models = SAS::procedural_chair_set(1, 8, furniture(false));
   std::vector<double> reports;
   CS::Consistent_segmentation_result r;
   const auto ids = cosegment(models,
@@ -375,7 +376,7 @@ TEST(RealMeshes, DifferentAnimalsDoNotCollapseIntoOneSegment)
 
 // Known labels for the models in `labelled` (all faces, or only those with `keep(i, f)`).
 template <typename Keep>
-std::vector<std::vector<std::size_t>> transfer(const std::vector<SAI::Furniture_model>& models,
+std::vector<std::vector<std::size_t>> transfer(const std::vector<SAS::Furniture_model>& models,
                                                const std::vector<std::size_t>& labelled, Keep keep,
                                                std::size_t k, std::vector<Mesh>& meshes,
                                                CS::Consistent_segmentation_result* r = nullptr)
@@ -401,7 +402,7 @@ std::vector<std::vector<std::size_t>> transfer(const std::vector<SAI::Furniture_
   return read_ids(meshes, maps);
 }
 
-void expect_known_kept(const std::vector<SAI::Furniture_model>& models, const std::vector<Mesh>& meshes,
+void expect_known_kept(const std::vector<SAS::Furniture_model>& models, const std::vector<Mesh>& meshes,
                        const std::vector<std::vector<std::size_t>>& ids)
 {
   for(std::size_t i = 0; i < meshes.size(); ++i) {
@@ -419,7 +420,7 @@ void expect_known_kept(const std::vector<SAI::Furniture_model>& models, const st
 TEST(Transfer, OneExampleLabelsTheSet)
 {
   // Chair 0 of this set has armrests: its four labels are the four parts.
-  const auto models = SAI::procedural_chair_set(6, 15, furniture(true, 0.6));
+  const auto models = SAS::procedural_chair_set(6, 15, furniture(true, 0.6));
   std::size_t example = models.size();
   for(std::size_t i = 0; i < models.size() && example == models.size(); ++i)
     if(models[i].has_armrests)
@@ -442,7 +443,7 @@ TEST(Transfer, OneExampleLabelsTheSet)
 
 TEST(Transfer, LabelledSetLabelsANewMesh)
 {
-  const auto models = SAI::procedural_chair_set(6, 27, furniture(true));
+  const auto models = SAS::procedural_chair_set(6, 27, furniture(true));
   std::vector<Mesh> meshes;
   const auto ids =
     transfer(models, {0, 1, 2, 3, 4}, [](std::size_t, std::size_t) { return true; }, 4, meshes);
@@ -454,7 +455,7 @@ TEST(Transfer, HalfLabelledMeshesAreCompleted)
 {
   // Every chair has the labels of half of its pieces (every other piece, starting with the first
   // in even chairs and the second in odd ones): what one chair lacks, others have.
-  const auto models = SAI::procedural_chair_set(6, 31, furniture(true));
+  const auto models = SAS::procedural_chair_set(6, 31, furniture(true));
   auto half = [&](std::size_t i, std::size_t f) { return (models[i].piece[f] + i) % 2 == 0; };
   std::vector<Mesh> meshes;
   const auto ids = transfer(models, {0, 1, 2, 3, 4, 5}, half, 4, meshes);
@@ -473,7 +474,7 @@ TEST(Transfer, HalfLabelledMeshesAreCompleted)
 
 TEST(Transfer, MapsWithoutKnownLabelsChangeNothing)
 {
-  const auto models = SAI::procedural_chair_set(3, 5, furniture(true));
+  const auto models = SAS::procedural_chair_set(3, 5, furniture(true));
   const auto plain = cosegment(models, CS::parameters::number_of_segments(6).random_seed(3));
   std::vector<Mesh> meshes;
   const auto none = transfer(models, {}, [](std::size_t, std::size_t) { return true; }, 6, meshes);
@@ -483,7 +484,7 @@ TEST(Transfer, MapsWithoutKnownLabelsChangeNothing)
 TEST(Transfer, SparseLabelsKeepTheirValues)
 {
   // Labels 0..3 shifted to 10..13: ids 10..13 for them, the others after, ids 0..9 unused.
-  const auto models = SAI::procedural_chair_set(3, 5, furniture(true, 1.0));
+  const auto models = SAS::procedural_chair_set(3, 5, furniture(true, 1.0));
   std::vector<Mesh> meshes = to_meshes(models);
   std::vector<Label_map> known;
   for(std::size_t i = 0; i < meshes.size(); ++i) {
@@ -514,7 +515,7 @@ TEST(Transfer, SparseLabelsKeepTheirValues)
 TEST(Transfer, TwoKnownLabelsNeverMerge)
 {
   // Far fewer segments asked than known labels: the known labels stay apart.
-  const auto models = SAI::procedural_chair_set(3, 5, furniture(false, 1.0));
+  const auto models = SAS::procedural_chair_set(3, 5, furniture(false, 1.0));
   std::vector<Mesh> meshes;
   CS::Consistent_segmentation_result r;
   const auto ids = transfer(models, {0}, [](std::size_t, std::size_t) { return true; }, 1, meshes, &r);
@@ -526,7 +527,7 @@ TEST(Transfer, TwoKnownLabelsNeverMerge)
 // Symmetric segmentation
 
 // The fraction of the area of `m` whose face has the id of the face closest to its mirror image.
-double mirror_agreement(const SAI::Labelled_triangle_mesh& m, const std::vector<std::size_t>& ids,
+double mirror_agreement(const SAS::Labelled_triangle_mesh& m, const std::vector<std::size_t>& ids,
                         const Vector_3d& n, double d)
 {
   std::vector<Vector_3d> centers;
@@ -552,9 +553,9 @@ double mirror_agreement(const SAI::Labelled_triangle_mesh& m, const std::vector<
 }
 
 // A chair bent slightly out of symmetry: x += 0.04 sin(3 y) + 0.03 z^2 (its plane stays near x = 0).
-SAI::Labelled_triangle_mesh bent_chair(std::uint64_t seed)
+SAS::Labelled_triangle_mesh bent_chair(std::uint64_t seed)
 {
-  SAI::Labelled_triangle_mesh m = SAI::procedural_chair(seed, 0, furniture(false, 1.0)).mesh;
+  SAS::Labelled_triangle_mesh m = SAS::procedural_chair(seed, 0, furniture(false, 1.0)).mesh;
   for(auto& p : m.points)
     p[0] += 0.04 * std::sin(3 * p[1]) + 0.03 * p[2] * p[2];
   return m;
@@ -564,9 +565,9 @@ TEST(Symmetric, MirrorFacesShareTheirSegment)
 {
   for(std::uint64_t seed : {2u, 6u}) {
     SCOPED_TRACE(seed);
-    const SAI::Labelled_triangle_mesh lm = bent_chair(seed);
+    const SAS::Labelled_triangle_mesh lm = bent_chair(seed);
     Mesh m;
-    SAI::fill_polygon_mesh(lm, m);
+    SAS::fill_polygon_mesh(lm, m);
     auto sym = m.add_property_map<face_descriptor, std::size_t>("f:sym", unset).first;
     const CS::Consistent_segmentation_result r = CS::symmetric_segmentation(
       m, Kernel::Plane_3(1, 0, 0, 0), sym, CS::parameters::number_of_segments(5).random_seed(1));
@@ -596,13 +597,13 @@ TEST(Symmetric, PlaneInAnyPose)
   // The bent chair moved rigidly, with its plane moved along and given unnormalized: the result
   // is as symmetric about the moved plane as the unmoved one is about x = 0 (the greedy merging
   // may break ties between mirror merges differently, so the labels need not be identical).
-  SAI::Labelled_triangle_mesh lm = bent_chair(2);
+  SAS::Labelled_triangle_mesh lm = bent_chair(2);
   // Rotation by 90 degrees about z and a translation: x -> y, y -> -x.
-  SAI::Labelled_triangle_mesh moved = lm;
+  SAS::Labelled_triangle_mesh moved = lm;
   for(auto& p : moved.points)
     p = {-p[1] + 3.0, p[0] - 1.0, p[2] + 0.5};
   Mesh mm;
-  SAI::fill_polygon_mesh(moved, mm);
+  SAS::fill_polygon_mesh(moved, mm);
   auto b = mm.add_property_map<face_descriptor, std::size_t>("f:b", unset).first;
   // The plane x = 0 becomes y = -1, i.e. 0 x + 2 y + 0 z + 2 = 0.
   const auto r = CS::symmetric_segmentation(mm, Kernel::Plane_3(0, 2, 0, 2), b, CS::parameters::number_of_segments(5));
@@ -627,10 +628,10 @@ TEST(Parameters, PolyhedronAndVertexPointMaps)
 {
   typedef CGAL::Polyhedron_3<Kernel> Polyhedron;
   typedef boost::graph_traits<Polyhedron>::face_descriptor poly_face;
-  const auto models = SAI::procedural_chair_set(4, 12, furniture(true));
+  const auto models = SAS::procedural_chair_set(4, 12, furniture(true));
   std::vector<Polyhedron> polys(models.size());
   for(std::size_t i = 0; i < models.size(); ++i)
-    SAI::fill_polygon_mesh(models[i].mesh, polys[i]);
+    SAS::fill_polygon_mesh(models[i].mesh, polys[i]);
   std::vector<std::map<poly_face, std::size_t>> storage(models.size());
   std::vector<boost::associative_property_map<std::map<poly_face, std::size_t>>> maps;
   for(auto& s : storage)
@@ -658,7 +659,7 @@ TEST(Parameters, PolyhedronAndVertexPointMaps)
   CS::consistent_segmentation(meshes, b, CS::parameters::number_of_segments(6).vertex_point_maps(scaled));
   const auto ids_b = read_ids(meshes, b);
   for(std::size_t i = 0; i < meshes.size(); ++i)
-    EXPECT_GE(SAI::rand_index(ids_a[i], ids_b[i]), 0.98) << "mesh " << i;
+    EXPECT_GE(SAS::rand_index(ids_a[i], ids_b[i]), 0.98) << "mesh " << i;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -666,7 +667,7 @@ TEST(Parameters, PolyhedronAndVertexPointMaps)
 
 TEST(BadInput, SetsAndMeshesThatCannotBeSegmented)
 {
-  const auto models = SAI::procedural_chair_set(2, 1, furniture(false));
+  const auto models = SAS::procedural_chair_set(2, 1, furniture(false));
   std::vector<Mesh> meshes = to_meshes(models);
   std::vector<Id_map> maps = id_maps(meshes);
   auto untouched = [&]() {
@@ -714,7 +715,7 @@ TEST(BadInput, SetsAndMeshesThatCannotBeSegmented)
 
 TEST(BadInput, ParametersOutOfRange)
 {
-  const auto models = SAI::procedural_chair_set(2, 1, furniture(false));
+  const auto models = SAS::procedural_chair_set(2, 1, furniture(false));
   std::vector<Mesh> meshes = to_meshes(models);
   std::vector<Id_map> maps = id_maps(meshes);
   namespace P = CS::parameters;

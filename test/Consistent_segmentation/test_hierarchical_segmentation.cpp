@@ -15,7 +15,7 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 
 #include <CGAL/Consistent_segmentation/hierarchical_segmentation.h>
-#include <CGAL/Shape_analysis/internal/Procedural_shapes.h>
+#include <Shape_analysis_support/Procedural_shapes.h>
 
 #include <gtest/gtest.h>
 
@@ -42,6 +42,7 @@ typedef CGAL::Polyhedron_3<Kernel> Polyhedron;
 namespace CS = CGAL::Consistent_segmentation;
 namespace SAI = CGAL::Shape_analysis::internal;
 namespace PMP = CGAL::Polygon_mesh_processing;
+namespace SAS = CGAL::Shape_analysis_support;
 using SAI::Vector_3d;
 
 // A part-recovery threshold: the real algorithm scores >= 0.97 on every procedural shape; random
@@ -63,17 +64,17 @@ Mesh read_mesh(const std::string& name)
   return m;
 }
 
-Mesh to_surface_mesh(const SAI::Labelled_triangle_mesh& lm)
+Mesh to_surface_mesh(const SAS::Labelled_triangle_mesh& lm)
 {
   Mesh m;
-  SAI::fill_polygon_mesh(lm, m);
+  SAS::fill_polygon_mesh(lm, m);
   return m;
 }
 
 // The triangles of a Surface_mesh as a soup (for shuffling).
-SAI::Labelled_triangle_mesh to_soup(const Mesh& m)
+SAS::Labelled_triangle_mesh to_soup(const Mesh& m)
 {
-  SAI::Labelled_triangle_mesh lm;
+  SAS::Labelled_triangle_mesh lm;
   for(auto v : vertices(m))
     lm.points.push_back({m.point(v).x(), m.point(v).y(), m.point(v).z()});
   for(auto f : faces(m)) {
@@ -180,7 +181,7 @@ struct Agreement
 Agreement agreement(const std::vector<std::size_t>& a, const std::vector<std::size_t>& b,
                     const std::vector<double>& areas)
 {
-  return {SAI::rand_index(a, b), SAI::matched_overlap(a, b, &areas)};
+  return {SAS::rand_index(a, b), SAS::matched_overlap(a, b, &areas)};
 }
 
 bool recovers(const Agreement& x)
@@ -190,10 +191,10 @@ bool recovers(const Agreement& x)
 
 // Segments a procedural shape into its number of parts and checks that the parts are recovered
 // and numbered by decreasing area.
-void expect_parts_recovered(const SAI::Procedural_shape& shape, double cell, const char* what)
+void expect_parts_recovered(const SAS::Procedural_shape& shape, double cell, const char* what)
 {
   SCOPED_TRACE(what);
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(shape, cell);
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(shape, cell);
   const Mesh m = to_surface_mesh(lm);
   const std::size_t k = lm.number_of_labels;
   std::size_t count = 0;
@@ -234,30 +235,30 @@ void expect_parts_recovered(const SAI::Procedural_shape& shape, double cell, con
 
 TEST(ProceduralParts, ThreeSphereChain)
 {
-  expect_parts_recovered(SAI::three_sphere_chain(), 0.2, "seed 0");
-  expect_parts_recovered(SAI::three_sphere_chain(1), 0.2, "seed 1");
-  expect_parts_recovered(SAI::three_sphere_chain(2), 0.18, "seed 2");
+  expect_parts_recovered(SAS::three_sphere_chain(), 0.2, "seed 0");
+  expect_parts_recovered(SAS::three_sphere_chain(1), 0.2, "seed 1");
+  expect_parts_recovered(SAS::three_sphere_chain(2), 0.18, "seed 2");
 }
 
 TEST(ProceduralParts, BodyWithFourLegs)
 {
-  expect_parts_recovered(SAI::body_with_limbs(), 0.14, "four legs");
-  expect_parts_recovered(SAI::body_with_limbs(4, true), 0.14, "four legs and a head");
+  expect_parts_recovered(SAS::body_with_limbs(), 0.14, "four legs");
+  expect_parts_recovered(SAS::body_with_limbs(4, true), 0.14, "four legs and a head");
 }
 
 TEST(ProceduralParts, Star)
 {
-  expect_parts_recovered(SAI::star(6), 0.16, "six arms");
-  expect_parts_recovered(SAI::star(8, 3), 0.15, "eight arms");
+  expect_parts_recovered(SAS::star(6), 0.16, "six arms");
+  expect_parts_recovered(SAS::star(8, 3), 0.15, "eight arms");
 }
 
 TEST(ProceduralParts, MeasuresRejectWrongSegmentations)
 {
   // The agreement measures would catch a wrong algorithm: random labels and a plausible split
   // across the parts (three slabs along z, of about equal area) stay far below the threshold.
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::three_sphere_chain(), 0.2);
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(SAS::three_sphere_chain(), 0.2);
   const std::vector<double> areas = lm.areas();
-  SAI::Procedural_random rng(1);
+  SAS::Procedural_random rng(1);
   std::vector<std::size_t> random_labels(lm.number_of_faces());
   for(auto& l : random_labels)
     l = rng.index(3);
@@ -291,14 +292,14 @@ TEST(SeparatePieces, EachBoxIsOneSegment)
 {
   for(double gap : {1.0, 0.15}) { // far apart (spanning links) and close (proximity links)
     SCOPED_TRACE("gap " + std::to_string(gap));
-    const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::separate_boxes(4, gap), 0.15);
-    ASSERT_EQ(SAI::number_of_components(lm), 4u);
+    const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(SAS::separate_boxes(4, gap), 0.15);
+    ASSERT_EQ(SAS::number_of_components(lm), 4u);
     const Mesh m = to_surface_mesh(lm);
     std::size_t count = 0;
     const std::vector<std::size_t> labels = segment_k(m, 4, &count);
     expect_valid_segmentation(m, labels, count, 4, true);
     // Exactly the boxes, and the largest box (the last one) is segment 0.
-    EXPECT_EQ(SAI::rand_index(labels, lm.labels), 1.0);
+    EXPECT_EQ(SAS::rand_index(labels, lm.labels), 1.0);
     for(std::size_t f = 0; f < labels.size(); ++f)
       ASSERT_EQ(labels[f], 3 - lm.labels[f]);
 
@@ -335,7 +336,7 @@ TEST(SeparatePieces, TensOfComponents)
   std::size_t count = 0;
   const std::vector<std::size_t> labels = segment_k(m, rows * columns, &count);
   ASSERT_EQ(count, rows * columns);
-  EXPECT_EQ(SAI::rand_index(labels, pebble_of_face), 1.0);
+  EXPECT_EQ(SAS::rand_index(labels, pebble_of_face), 1.0);
 
   for(std::size_t k : {5u, 12u}) {
     const std::vector<std::size_t> fewer = segment_k(m, k, &count);
@@ -399,7 +400,7 @@ TEST(RealMeshes, RemovedFacesAreIgnored)
     before.push_back(with_garbage.at(original[f]));
     after.push_back(seg[f]);
   }
-  EXPECT_EQ(SAI::rand_index(before, after), 1.0);
+  EXPECT_EQ(SAS::rand_index(before, after), 1.0);
 }
 
 TEST(RealMeshes, ElephantWithHolesHasBoundaries)
@@ -412,21 +413,21 @@ TEST(RealMeshes, ElephantWithHolesHasBoundaries)
   ASSERT_GT(border_edges, 0u);
   std::size_t count = 0;
   const std::vector<std::size_t> labels = segment_k(m, 6, &count);
-  SAI::Labelled_triangle_mesh soup = to_soup(m);
-  const bool connected = SAI::number_of_components(soup) == 1;
+  SAS::Labelled_triangle_mesh soup = to_soup(m);
+  const bool connected = SAS::number_of_components(soup) == 1;
   expect_valid_segmentation(m, labels, count, 6, connected);
 }
 
 TEST(RealMeshes, BlobbyWithThreeComponents)
 {
   const Mesh m = read_mesh("blobby_3cc.off");
-  SAI::Labelled_triangle_mesh soup = to_soup(m);
+  SAS::Labelled_triangle_mesh soup = to_soup(m);
   std::vector<std::size_t> component;
-  ASSERT_EQ(SAI::number_of_components(soup, &component), 3u);
+  ASSERT_EQ(SAS::number_of_components(soup, &component), 3u);
   std::size_t count = 0;
   const std::vector<std::size_t> three = segment_k(m, 3, &count);
   expect_valid_segmentation(m, three, count, 3, true);
-  EXPECT_EQ(SAI::rand_index(three, component), 1.0) << "each component is one segment";
+  EXPECT_EQ(SAS::rand_index(three, component), 1.0) << "each component is one segment";
   const std::vector<std::size_t> seven = segment_k(m, 7, &count);
   expect_valid_segmentation(m, seven, count, 7, false);
   // No segment spans two components (they are far apart compared with the parts).
@@ -442,15 +443,15 @@ TEST(RealMeshes, BlobbyWithThreeComponents)
 
 TEST(Invariance, RigidTransform)
 {
-  const auto transform = SAI::Rigid_transform::from_axis_angle(Vector_3d(0.3, -1, 0.6), 2.1,
+  const auto transform = SAS::Rigid_transform::from_axis_angle(Vector_3d(0.3, -1, 0.6), 2.1,
                                                                Vector_3d(10, -3, 7));
   { // procedural: known parts
-    const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::body_with_limbs(), 0.14);
-    SAI::Labelled_triangle_mesh moved = lm;
-    SAI::transform_points(moved, transform);
+    const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(SAS::body_with_limbs(), 0.14);
+    SAS::Labelled_triangle_mesh moved = lm;
+    SAS::transform_points(moved, transform);
     const std::vector<std::size_t> a = segment_k(to_surface_mesh(lm), 5);
     const std::vector<std::size_t> b = segment_k(to_surface_mesh(moved), 5);
-    EXPECT_GE(SAI::rand_index(a, b), 0.995);
+    EXPECT_GE(SAS::rand_index(a, b), 0.995);
   }
   { // elephant
     const Mesh m = read_mesh("elephant.off");
@@ -462,12 +463,12 @@ TEST(Invariance, RigidTransform)
     }
     const std::vector<std::size_t> a = segment_k(m, 6);
     const std::vector<std::size_t> b = segment_k(moved, 6);
-    EXPECT_GE(SAI::rand_index(a, b), 0.995);
+    EXPECT_GE(SAS::rand_index(a, b), 0.995);
     // A uniform scale does not matter either.
     Mesh scaled = m;
     for(auto v : vertices(scaled))
       scaled.point(v) = Point(37 * m.point(v).x(), 37 * m.point(v).y(), 37 * m.point(v).z());
-    EXPECT_GE(SAI::rand_index(a, segment_k(scaled, 6)), 0.995);
+    EXPECT_GE(SAS::rand_index(a, segment_k(scaled, 6)), 0.995);
   }
 }
 
@@ -481,7 +482,7 @@ TEST(Invariance, Orientation)
     Mesh reversed = m;
     PMP::reverse_face_orientations(reversed);
     for(std::size_t k : {4u, 8u})
-      EXPECT_EQ(SAI::rand_index(segment_k(m, k), segment_k(reversed, k)), 1.0) << "k = " << k;
+      EXPECT_EQ(SAS::rand_index(segment_k(m, k), segment_k(reversed, k)), 1.0) << "k = " << k;
   }
   // blobby_3cc: reverse one of its three components only.
   const Mesh m = read_mesh("blobby_3cc.off");
@@ -493,7 +494,7 @@ TEST(Invariance, Orientation)
     if(component[f] == 0)
       first.push_back(f);
   PMP::reverse_face_orientations(first, partly);
-  EXPECT_EQ(SAI::rand_index(segment_k(m, 4), segment_k(partly, 4)), 1.0);
+  EXPECT_EQ(SAS::rand_index(segment_k(m, 4), segment_k(partly, 4)), 1.0);
 }
 
 // A vertex that no face uses, however far, changes nothing.
@@ -503,32 +504,32 @@ TEST(Invariance, UnusedVertex)
   Mesh with_extra = m;
   with_extra.add_vertex(Point(1000, 1000, 1000));
   for(std::size_t k : {2u, 4u})
-    EXPECT_EQ(SAI::rand_index(segment_k(m, k), segment_k(with_extra, k)), 1.0) << "k = " << k;
+    EXPECT_EQ(SAS::rand_index(segment_k(m, k), segment_k(with_extra, k)), 1.0) << "k = " << k;
 }
 
 TEST(Invariance, FaceOrder)
 {
-  auto check = [](const SAI::Labelled_triangle_mesh& lm, std::size_t k, const char* what) {
+  auto check = [](const SAS::Labelled_triangle_mesh& lm, std::size_t k, const char* what) {
     SCOPED_TRACE(what);
     const std::vector<std::size_t> a = segment_k(to_surface_mesh(lm), k);
     for(std::uint64_t seed : {1u, 2u}) {
-      SAI::Labelled_triangle_mesh shuffled = lm;
-      const std::vector<std::size_t> order = SAI::shuffle_faces(shuffled, seed, seed == 2);
+      SAS::Labelled_triangle_mesh shuffled = lm;
+      const std::vector<std::size_t> order = SAS::shuffle_faces(shuffled, seed, seed == 2);
       const std::vector<std::size_t> b = segment_k(to_surface_mesh(shuffled), k);
       std::vector<std::size_t> back(b.size());
       for(std::size_t i = 0; i < b.size(); ++i)
         back[order[i]] = b[i];
-      EXPECT_GE(SAI::rand_index(a, back), 0.995) << "seed " << seed;
+      EXPECT_GE(SAS::rand_index(a, back), 0.995) << "seed " << seed;
     }
   };
-  check(SAI::mesh_procedural_shape(SAI::star(6), 0.16), 7, "star");
+  check(SAS::mesh_procedural_shape(SAS::star(6), 0.16), 7, "star");
   check(to_soup(read_mesh("elephant.off")), 6, "elephant");
 }
 
 TEST(Invariance, VertexPointMapAndFaceIndexMap)
 {
   const Mesh m = read_mesh("elephant.off");
-  const auto transform = SAI::Rigid_transform::from_axis_angle(Vector_3d(1, 1, 0), 0.9, Vector_3d(0, 2, 0));
+  const auto transform = SAS::Rigid_transform::from_axis_angle(Vector_3d(1, 1, 0), 0.9, Vector_3d(0, 2, 0));
   // Segmenting through a vertex point map of moved points is segmenting the moved mesh.
   Mesh with_map = m;
   auto moved_points = with_map.add_property_map<vertex_descriptor, Point>("v:moved").first;
@@ -552,7 +553,7 @@ TEST(Invariance, VertexPointMapAndFaceIndexMap)
   const std::vector<std::size_t> a = segment_k(m, 6);
   const std::vector<std::size_t> b =
     segment(reversed, CS::parameters::face_index_map(index).number_of_segments(6));
-  EXPECT_GE(SAI::rand_index(a, b), 0.995);
+  EXPECT_GE(SAS::rand_index(a, b), 0.995);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -562,9 +563,9 @@ TEST(Parameters, PriorSegmentationIsFollowed)
 {
   // A capsule has no crease: left alone, the 2-segmentation cuts it near the middle. A prior
   // boundary at x = 0.6 is followed instead.
-  SAI::Procedural_shape capsule;
-  capsule.add(SAI::Shape_primitive::capsule(Vector_3d(-1.5, 0, 0), Vector_3d(1.5, 0, 0), 0.5, 0));
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(capsule, 0.14);
+  SAS::Procedural_shape capsule;
+  capsule.add(SAS::Shape_primitive::capsule(Vector_3d(-1.5, 0, 0), Vector_3d(1.5, 0, 0), 0.5, 0));
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(capsule, 0.14);
   Mesh m = to_surface_mesh(lm);
   auto prior = m.add_property_map<face_descriptor, int>("f:prior", 0).first;
   std::vector<std::size_t> prior_labels;
@@ -597,7 +598,7 @@ TEST(Parameters, PriorSegmentationIsFollowed)
 
 TEST(Parameters, ProgressRefinementDeterminismAndExtremeCounts)
 {
-  const Mesh m = to_surface_mesh(SAI::mesh_procedural_shape(SAI::three_sphere_chain(), 0.2));
+  const Mesh m = to_surface_mesh(SAS::mesh_procedural_shape(SAS::three_sphere_chain(), 0.2));
   // Progress: fractions in [0, 1], non-decreasing, ending at 1.
   std::vector<double> progress;
   std::size_t count = 0;
@@ -616,7 +617,7 @@ TEST(Parameters, ProgressRefinementDeterminismAndExtremeCounts)
   // Deterministic.
   EXPECT_EQ(segment_k(m, 3), a);
   // Without boundary refinement the parts are still found.
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::three_sphere_chain(), 0.2);
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(SAS::three_sphere_chain(), 0.2);
   const std::vector<std::size_t> raw =
     segment(m, CS::parameters::number_of_segments(3).boundary_refinement(false), &count);
   expect_valid_segmentation(m, raw, count, 3, true);
@@ -645,9 +646,9 @@ TEST(Parameters, ProgressRefinementDeterminismAndExtremeCounts)
 
 TEST(Parameters, WorksWithPolyhedron)
 {
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::three_sphere_chain(), 0.2);
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(SAS::three_sphere_chain(), 0.2);
   Polyhedron poly;
-  const auto poly_faces = SAI::fill_polygon_mesh(lm, poly);
+  const auto poly_faces = SAS::fill_polygon_mesh(lm, poly);
   ASSERT_EQ(poly_faces.size(), lm.number_of_faces());
   auto seg = get(CGAL::dynamic_face_property_t<std::size_t>(), poly);
   for(auto f : faces(poly))
@@ -661,7 +662,7 @@ TEST(Parameters, WorksWithPolyhedron)
     ASSERT_LT(l, 3u);
   EXPECT_TRUE(recovers(agreement(labels, lm.labels, lm.areas())));
   // Same partition as with Surface_mesh.
-  EXPECT_GE(SAI::rand_index(labels, segment_k(to_surface_mesh(lm), 3)), 0.995);
+  EXPECT_GE(SAS::rand_index(labels, segment_k(to_surface_mesh(lm), 3)), 0.995);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -708,17 +709,17 @@ TEST(BadInput, MeshesThatCannotBeSegmented)
   mixed.add_face(b, e, c);
   expect_bad_input(mixed, k2, "not a triangle");
 
-  Mesh nan = to_surface_mesh(SAI::mesh_procedural_shape(SAI::three_sphere_chain(), 0.3));
+  Mesh nan = to_surface_mesh(SAS::mesh_procedural_shape(SAS::three_sphere_chain(), 0.3));
   nan.point(*std::next(vertices(nan).begin(), 10)) = Point(0, std::numeric_limits<double>::quiet_NaN(), 0);
   expect_bad_input(nan, k2, "finite");
-  Mesh inf = to_surface_mesh(SAI::mesh_procedural_shape(SAI::three_sphere_chain(), 0.3));
+  Mesh inf = to_surface_mesh(SAS::mesh_procedural_shape(SAS::three_sphere_chain(), 0.3));
   inf.point(*vertices(inf).begin()) = Point(std::numeric_limits<double>::infinity(), 0, 0);
   expect_bad_input(inf, k2, "finite");
 }
 
 TEST(BadInput, ParametersOutOfRange)
 {
-  const Mesh m = to_surface_mesh(SAI::mesh_procedural_shape(SAI::three_sphere_chain(), 0.3));
+  const Mesh m = to_surface_mesh(SAS::mesh_procedural_shape(SAS::three_sphere_chain(), 0.3));
   const std::size_t n = num_faces(m);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   namespace P = CS::parameters;

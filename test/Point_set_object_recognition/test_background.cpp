@@ -8,7 +8,7 @@
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO/PLY.h>
 
-#include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
+#include <Shape_analysis_support/Urban_scene.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
 #include <CGAL/Shape_analysis/internal/Random.h>
 
@@ -26,12 +26,13 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
 namespace PSOR = CGAL::Point_set_object_recognition;
 namespace PSI = CGAL::Point_set_object_recognition::internal;
+namespace SAS = CGAL::Shape_analysis_support;
 using PSOR::Point_kind;
 
 struct Scanned
 {
-  PSI::Urban_scene scene;
-  PSI::Urban_scan scan;
+  SAS::Urban_scene scene;
+  SAS::Urban_scan scan;
   std::vector<Point> points;
 };
 
@@ -39,12 +40,12 @@ const Scanned& street()
 {
   static const Scanned s = [] {
     Scanned r;
-    PSI::Urban_scene_options o;
+    SAS::Urban_scene_options o;
     o.seed = 7;
     o.street_length = 150;
     o.target_points = 300000;
-    r.scene = PSI::make_urban_scene(o);
-    r.scan = PSI::scan_urban_scene(r.scene, o);
+    r.scene = SAS::make_urban_scene(o);
+    r.scan = SAS::scan_urban_scene(r.scene, o);
     for(const auto& p : r.scan.points)
       r.points.emplace_back(p.x, p.y, p.z);
     return r;
@@ -63,10 +64,10 @@ TEST(BackgroundRemoval, GroundBuildingsGoObjectsStay)
   for(std::size_t i = 0; i < s.points.size(); ++i) {
     const auto& p = s.scan.points[i];
     const bool kept = r.kind[i] == Point_kind::FOREGROUND;
-    if(p.label == PSI::GROUND) {
+    if(p.label == SAS::GROUND) {
       ++ground;
       ground_removed += kept ? 0 : 1;
-    } else if(p.label == PSI::BUILDING) {
+    } else if(p.label == SAS::BUILDING) {
       ++building;
       building_removed += kept ? 0 : 1;
     } else if(p.instance > 0) {

@@ -7,7 +7,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Point_set_3.h>
 
-#include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
+#include <Shape_analysis_support/Urban_scene.h>
 #include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
 
@@ -24,6 +24,7 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
 namespace PSOR = CGAL::Point_set_object_recognition;
 namespace PSI = CGAL::Point_set_object_recognition::internal;
+namespace SAS = CGAL::Shape_analysis_support;
 
 PSOR::Object_location at(double x, double y)
 {
@@ -130,12 +131,12 @@ const Located_street& located_street()
 {
   static const Located_street s = [] {
     Located_street r;
-    PSI::Urban_scene_options o;
+    SAS::Urban_scene_options o;
     o.seed = 11;
     o.street_length = 200;
     o.target_points = 500000;
-    const PSI::Urban_scene scene = PSI::make_urban_scene(o);
-    const PSI::Urban_scan scan = PSI::scan_urban_scene(scene, o);
+    const SAS::Urban_scene scene = SAS::make_urban_scene(o);
+    const SAS::Urban_scan scan = SAS::scan_urban_scene(scene, o);
     r.back_y = scene.back_y;
     std::vector<Point> points;
     std::map<int, std::size_t> scanned;

@@ -9,7 +9,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Point_set_3.h>
 
-#include <CGAL/Point_set_object_recognition/internal/Scanned_objects.h>
+#include <Shape_analysis_support/Scanned_objects.h>
 #include <CGAL/Point_set_object_recognition/recognize_objects.h>
 #include <CGAL/Point_set_object_recognition/segment_objects.h>
 #include <CGAL/Shape_analysis/internal/Random.h>
@@ -29,6 +29,7 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
 namespace PSOR = CGAL::Point_set_object_recognition;
 namespace PSI = CGAL::Point_set_object_recognition::internal;
+namespace SAS = CGAL::Shape_analysis_support;
 using CGAL::Shape_analysis::Bad_input;
 
 // Points on a surface sampled with jitter; label per point.
@@ -89,8 +90,8 @@ std::pair<double, double> score(const std::vector<int>& labels, const std::vecto
 // range-dependent density included), its ground removed.
 struct Small_street
 {
-  PSI::Urban_scene scene;
-  PSI::urban_detail::Builder builder{scene, {}};
+  SAS::Urban_scene scene;
+  SAS::urban_detail::Builder builder{scene, {}};
   int next_id = 1;
 
   Small_street()
@@ -99,22 +100,22 @@ struct Small_street
     for(int i = -5; i < 25; ++i)
       for(int j = -12; j < 12; ++j)
         builder.quad({double(i), double(j), 0}, {double(i + 1), double(j), 0}, {double(i + 1), double(j + 1), 0},
-                     {double(i), double(j + 1), 0}, PSI::GROUND);
-    PSI::urban_detail::Shape facade;
+                     {double(i), double(j + 1), 0}, SAS::GROUND);
+    SAS::urban_detail::Shape facade;
     facade.aabox(-5, 10, -0.5, 25, 14, 8);
-    builder.place(facade, 0, 0, 0, 0, 0, PSI::BUILDING, false);
+    builder.place(facade, 0, 0, 0, 0, 0, SAS::BUILDING, false);
   }
   // An object of class c, its local origin at (x, y) on the ground.
-  void add(const PSI::urban_detail::Shape& shape, double x, double y, int c)
+  void add(const SAS::urban_detail::Shape& shape, double x, double y, int c)
   {
     ASSERT_TRUE(builder.place(shape, x, y, 0, 0, next_id++, c, false));
   }
-  PSI::Scanned_objects scan() const
+  SAS::Scanned_objects scan() const
   {
-    PSI::Urban_scene_options o;
+    SAS::Urban_scene_options o;
     o.street_length = 20;
     o.target_points = 150000;
-    return PSI::scanned_objects(scene, PSI::scan_urban_scene(scene, o));
+    return SAS::scanned_objects(scene, SAS::scan_urban_scene(scene, o));
   }
 };
 
@@ -127,10 +128,10 @@ TEST(Segmentation, PostTouchingAWall)
   // recall 0.25, the cut going through the post, whose 0.2 m cells also held facade points); all
   // points within 1 m: precision under 0.02.
   Small_street street;
-  PSI::urban_detail::Shape post;
+  SAS::urban_detail::Shape post;
   post.post(0, 0, -0.05, 2.5, 0.15);
-  street.add(post, 10, 10 - 0.15 - 0.01, PSI::TALL_POST);
-  const PSI::Scanned_objects s = street.scan();
+  street.add(post, 10, 10 - 0.15 - 0.01, SAS::TALL_POST);
+  const SAS::Scanned_objects s = street.scan();
   ASSERT_EQ(s.locations.size(), 1u);
   const PSOR::Object_segmentation r = PSOR::segment_object(s.points, s.locations[0]);
   const auto pr = score(s.instance, r.points, 1);
@@ -147,8 +148,8 @@ TEST(Segmentation, PostTouchingAWall)
   EXPECT_LT(score(s.instance, all.points, 1).first, 0.1);
   // Away from the facade (30 cm), the post is found whole and alone.
   Small_street apart;
-  apart.add(post, 10, 10 - 0.15 - 0.3, PSI::TALL_POST);
-  const PSI::Scanned_objects t = apart.scan();
+  apart.add(post, 10, 10 - 0.15 - 0.3, SAS::TALL_POST);
+  const SAS::Scanned_objects t = apart.scan();
   const auto q = score(t.instance, PSOR::segment_object(t.points, t.locations[0]).points, 1);
   std::cerr << "post 30 cm from a wall: precision " << q.first << ", recall " << q.second << "\n";
   EXPECT_GE(q.first, 0.9);
@@ -158,11 +159,11 @@ TEST(Segmentation, PostTouchingAWall)
 TEST(Segmentation, TwoTouchingNewspaperBoxes)
 {
   Small_street street;
-  PSI::urban_detail::Shape box;
+  SAS::urban_detail::Shape box;
   box.aabox(-0.25, -0.22, -0.05, 0.25, 0.22, 1.1);
-  street.add(box, 10, 6, PSI::NEWSPAPER_BOX);
-  street.add(box, 10.51, 6, PSI::NEWSPAPER_BOX); // 1 cm apart
-  const PSI::Scanned_objects s = street.scan();
+  street.add(box, 10, 6, SAS::NEWSPAPER_BOX);
+  street.add(box, 10.51, 6, SAS::NEWSPAPER_BOX); // 1 cm apart
+  const SAS::Scanned_objects s = street.scan();
   ASSERT_EQ(s.locations.size(), 2u);
   const PSOR::Segmentation_result r = PSOR::segment_objects(s.points, s.locations);
   for(int k = 0; k < 2; ++k) {
@@ -259,26 +260,26 @@ TEST(Segmentation, InteractiveConstraintsAreHonoured)
 }
 
 // A generated street: ground removed, objects segmented at their true locations.
-const PSI::Scanned_objects& street()
+const SAS::Scanned_objects& street()
 {
-  static const PSI::Scanned_objects s = [] {
-    PSI::Urban_scene_options o;
+  static const SAS::Scanned_objects s = [] {
+    SAS::Urban_scene_options o;
     o.seed = 4;
     o.target_points = 300000;
     o.street_length = 80;
-    const PSI::Urban_scene scene = PSI::make_urban_scene(o);
-    return PSI::scanned_objects(scene, PSI::scan_urban_scene(scene, o));
+    const SAS::Urban_scene scene = SAS::make_urban_scene(o);
+    return SAS::scanned_objects(scene, SAS::scan_urban_scene(scene, o));
   }();
   return s;
 }
 
 TEST(Segmentation, ScannedStreetObjects)
 {
-  const PSI::Scanned_objects& s = street();
+  const SAS::Scanned_objects& s = street();
   ASSERT_GE(s.locations.size(), 10u);
   const PSOR::Segmentation_result r = PSOR::segment_objects(s.points, s.locations);
   const PSOR::Segmentation_evaluation e = PSOR::evaluate_segmentations(r.objects, s.instance, s.class_of_instance);
-  PSOR::print_segmentation_table(std::cerr, e, [](int c) { return std::string(PSI::object_class_name(c)); });
+  PSOR::print_segmentation_table(std::cerr, e, [](int c) { return std::string(SAS::object_class_name(c)); });
   // Measured 0.87 / 0.90 on seed 1 (tuning) and about the same on others: margins below.
   EXPECT_GE(e.precision, 0.75);
   EXPECT_GE(e.recall, 0.8);
@@ -294,7 +295,7 @@ TEST(Segmentation, ScannedStreetObjects)
 
 TEST(Segmentation, SameResultForAnyThreadCount)
 {
-  const PSI::Scanned_objects& s = street();
+  const SAS::Scanned_objects& s = street();
   const auto one = PSOR::segment_objects(s.points, s.locations, PSOR::parameters::number_of_threads(1));
   for(std::size_t t : {std::size_t(2), std::size_t(0)}) {
     const auto many = PSOR::segment_objects(s.points, s.locations, PSOR::parameters::number_of_threads(t));
@@ -365,12 +366,12 @@ struct Whole_scan
 const Whole_scan& whole_scan()
 {
   static const Whole_scan w = [] {
-    PSI::Urban_scene_options o;
+    SAS::Urban_scene_options o;
     o.seed = 5;
     o.target_points = 400000;
     o.street_length = 160;
-    const PSI::Urban_scene scene = PSI::make_urban_scene(o);
-    const PSI::Urban_scan scan = PSI::scan_urban_scene(scene, o);
+    const SAS::Urban_scene scene = SAS::make_urban_scene(o);
+    const SAS::Urban_scan scan = SAS::scan_urban_scene(scene, o);
     Whole_scan r;
     for(const auto& p : scan.points) {
       r.points.emplace_back(p.x, p.y, p.z);
@@ -378,7 +379,7 @@ const Whole_scan& whole_scan()
       if(p.instance > 0)
         r.class_of_instance[p.instance] = p.label;
     }
-    for(const auto& l : PSI::scanned_objects(scene, scan).locations)
+    for(const auto& l : SAS::scanned_objects(scene, scan).locations)
       r.seen.push_back({l[0], l[1]});
     return r;
   }();

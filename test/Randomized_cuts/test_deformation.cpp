@@ -17,7 +17,7 @@
 
 #include <CGAL/Randomized_cuts/partition_aware_deformation.h>
 #include <CGAL/Randomized_cuts/partition_function.h>
-#include <CGAL/Shape_analysis/internal/Procedural_shapes.h>
+#include <Shape_analysis_support/Procedural_shapes.h>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -43,6 +43,7 @@ typedef CGAL::Randomized_cuts::Partition_aware_cotangent_weight<Mesh, Edge_value
 
 namespace RC = CGAL::Randomized_cuts;
 namespace SAI = CGAL::Shape_analysis::internal;
+namespace SAS = CGAL::Shape_analysis_support;
 using CGAL::Shape_analysis::Bad_input;
 using SAI::Vector_3d;
 
@@ -106,7 +107,7 @@ double normal_angle(const Mesh& m, const std::vector<Vector_3d>& p, halfedge_des
 // `angle` about the z axis through `pivot`.
 struct Scene
 {
-  SAI::Labelled_triangle_mesh soup;
+  SAS::Labelled_triangle_mesh soup;
   Mesh mesh;
   Edge_values values;
   double largest_value = 0;
@@ -116,10 +117,10 @@ struct Scene
   std::vector<vertex_descriptor> fixed, control;
   std::vector<Point> targets;
 
-  Scene(const SAI::Procedural_shape& shape, double cell, std::size_t samples)
-    : soup(SAI::mesh_procedural_shape(shape, cell))
+  Scene(const SAS::Procedural_shape& shape, double cell, std::size_t samples)
+    : soup(SAS::mesh_procedural_shape(shape, cell))
   {
-    SAI::fill_polygon_mesh(soup, mesh);
+    SAS::fill_polygon_mesh(soup, mesh);
     values = mesh.add_property_map<edge_descriptor, double>("e:partition", 0.0).first;
     RC::partition_function(mesh, values, RC::parameters::number_of_samples(samples).random_seed(3));
     for(edge_descriptor e : edges(mesh))
@@ -141,8 +142,8 @@ struct Scene
 
   void set_problem(double fixed_x, double control_x, const Vector_3d& pivot, double angle)
   {
-    const SAI::Rigid_transform turn =
-      SAI::Rigid_transform::from_axis_angle(Vector_3d(0, 0, 1), angle, Vector_3d());
+    const SAS::Rigid_transform turn =
+      SAS::Rigid_transform::from_axis_angle(Vector_3d(0, 0, 1), angle, Vector_3d());
     fixed.clear();
     control.clear();
     targets.clear();
@@ -202,7 +203,7 @@ struct Scene
 const Scene& arms_scene()
 {
   static const Scene scene = [] {
-    Scene s(SAI::star(2), 0.16, 150);
+    Scene s(SAS::star(2), 0.16, 150);
     s.set_problem(-1.4, 1.4, Vector_3d(0.76, 0, 0), CGAL_PI / 4);
     return s;
   }();
@@ -214,7 +215,7 @@ const Scene& arms_scene()
 const Scene& chain_scene()
 {
   static const Scene scene = [] {
-    Scene s(SAI::three_sphere_chain(), 0.25, 150);
+    Scene s(SAS::three_sphere_chain(), 0.25, 150);
     s.set_problem(-1.95, 1.9, Vector_3d(0.6, 0, 0), CGAL_PI / 6);
     return s;
   }();

@@ -14,7 +14,7 @@
 #include <CGAL/Randomized_cuts/most_consistent_cuts.h>
 #include <CGAL/Randomized_cuts/partition_function.h>
 #include <CGAL/Randomized_cuts/segment_with_partition_function.h>
-#include <CGAL/Shape_analysis/internal/Procedural_shapes.h>
+#include <Shape_analysis_support/Procedural_shapes.h>
 
 #include <gtest/gtest.h>
 
@@ -37,21 +37,22 @@ typedef Mesh::Edge_index edge_descriptor;
 
 namespace RC = CGAL::Randomized_cuts;
 namespace SAI = CGAL::Shape_analysis::internal;
+namespace SAS = CGAL::Shape_analysis_support;
 using SAI::Vector_3d;
 
-Mesh to_mesh(const SAI::Labelled_triangle_mesh& lm)
+Mesh to_mesh(const SAS::Labelled_triangle_mesh& lm)
 {
   Mesh m;
-  SAI::fill_polygon_mesh(lm, m);
+  SAS::fill_polygon_mesh(lm, m);
   return m;
 }
 
 // Two overlapping spheres: one neck (labels 0 and 1).
-SAI::Procedural_shape dumbbell()
+SAS::Procedural_shape dumbbell()
 {
-  SAI::Procedural_shape s;
-  s.add(SAI::Shape_primitive::sphere(Vector_3d(-0.9, 0, 0), 1.0, 0));
-  s.add(SAI::Shape_primitive::sphere(Vector_3d(0.9, 0, 0), 0.9, 1));
+  SAS::Procedural_shape s;
+  s.add(SAS::Shape_primitive::sphere(Vector_3d(-0.9, 0, 0), 1.0, 0));
+  s.add(SAS::Shape_primitive::sphere(Vector_3d(0.9, 0, 0), 0.9, 1));
   return s;
 }
 
@@ -147,7 +148,7 @@ Neck_figures neck_figures(const Mesh& m, const std::vector<std::size_t>& labels,
 
 TEST(PartitionFunction, ScoreWeightedValuesAreNearOneAtTheNeckAndNearZeroElsewhere)
 {
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(dumbbell(), 0.2);
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(dumbbell(), 0.2);
   const Mesh m = to_mesh(lm);
   const std::vector<double> v = values_of(m, RC::parameters::score_weighting(true));
   const Neck_figures x = neck_figures(m, lm.labels, v);
@@ -164,7 +165,7 @@ TEST(PartitionFunction, MinCutValuesPeakAtEveryNeck)
 {
   // Unweighted: a neck is cut by the samples whose two faces fall on its two sides (about
   // 2 p (1 - p) of them for parts of area shares p and 1 - p).
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::three_sphere_chain(), 0.2);
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(SAS::three_sphere_chain(), 0.2);
   const Mesh m = to_mesh(lm);
   const std::vector<double> v = values_of(m, RC::parameters::random_seed(3));
   const Neck_figures x = neck_figures(m, lm.labels, v);
@@ -180,7 +181,7 @@ TEST(PartitionFunction, MinCutValuesPeakAtEveryNeck)
 
 TEST(PartitionFunction, KMeansAndHierarchicalSamplersAlsoFindTheNecks)
 {
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::three_sphere_chain(), 0.25);
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(SAS::three_sphere_chain(), 0.25);
   const Mesh m = to_mesh(lm);
   for(RC::Sampling_method method : {RC::K_MEANS, RC::HIERARCHICAL}) {
     SCOPED_TRACE(method == RC::K_MEANS ? "K-means" : "hierarchical");
@@ -216,7 +217,7 @@ TEST(PartitionFunction, MirrorSymmetricLimbsGetMatchingValues)
 {
   // Four identical legs placed symmetrically about the planes x = 0 and y = 0. A leg is cut off
   // at its neck or lower down (when a sampled face on the leg makes the neck too expensive).
-  SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::body_with_limbs(0), 0.15);
+  SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(SAS::body_with_limbs(0), 0.15);
   const Mesh m = to_mesh(lm);
   const auto np = RC::parameters::number_of_samples(800).random_seed(7);
   const std::vector<double> legs = cut_length_per_leg(m, values_of(m, np));
@@ -239,7 +240,7 @@ TEST(PartitionFunction, MirrorSymmetricLimbsGetMatchingValues)
 
 TEST(PartitionFunction, NoiseKeepsTheStrongestCutAtTheNeck)
 {
-  SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(dumbbell(), 0.2);
+  SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(dumbbell(), 0.2);
   // Every vertex moved by up to 5% of the mean edge length in each coordinate.
   const Mesh clean = to_mesh(lm);
   double length = 0;
@@ -247,7 +248,7 @@ TEST(PartitionFunction, NoiseKeepsTheStrongestCutAtTheNeck)
     length += std::sqrt(CGAL::squared_distance(clean.point(source(halfedge(e, clean), clean)),
                                                clean.point(target(halfedge(e, clean), clean))));
   length /= double(num_edges(clean));
-  SAI::Procedural_random rng(99);
+  SAS::Procedural_random rng(99);
   for(auto& p : lm.points)
     for(double& c : p)
       c += rng.uniform(-0.05, 0.05) * length;
@@ -259,7 +260,7 @@ TEST(PartitionFunction, NoiseKeepsTheStrongestCutAtTheNeck)
   std::vector<std::size_t> side(num_faces(m), 0);
   for(face_descriptor f : top.smaller_side)
     side[f] = 1;
-  EXPECT_GE(SAI::rand_index(side, lm.labels), 0.97);
+  EXPECT_GE(SAS::rand_index(side, lm.labels), 0.97);
   EXPECT_GT(top.consistency, 0.3);
   EXPECT_GT(top.number_of_samples, 100u); // about half of the 400 samples cut the neck
   // Every sample is counted once among the distinct cuts, which come by decreasing consistency.
@@ -278,7 +279,7 @@ TEST(PartitionFunction, NoiseKeepsTheStrongestCutAtTheNeck)
 
 TEST(PartitionFunction, CutsReportTheirEdgesLengthAndSides)
 {
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::three_sphere_chain(), 0.25);
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(SAS::three_sphere_chain(), 0.25);
   const Mesh m = to_mesh(lm);
   std::vector<double> v(num_edges(m), 0.0);
   const auto cuts = RC::most_consistent_cuts(
@@ -310,7 +311,7 @@ TEST(PartitionFunction, CutsReportTheirEdgesLengthAndSides)
 
 TEST(PartitionFunction, MultiscaleValuesAreThoseOfEachPartSize)
 {
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::body_with_limbs(1, true), 0.15);
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(SAS::body_with_limbs(1, true), 0.15);
   const Mesh m = to_mesh(lm);
   const std::vector<double> sizes = {0.02, 0.05, 0.12};
   std::vector<std::vector<double>> multi(num_edges(m));
@@ -343,7 +344,7 @@ TEST(PartitionFunction, MultiscaleValuesAreThoseOfEachPartSize)
 
 TEST(PartitionFunction, SameSeedSameValuesForAnyNumberOfThreads)
 {
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::three_sphere_chain(), 0.4);
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(SAS::three_sphere_chain(), 0.4);
   const Mesh m = to_mesh(lm);
   for(RC::Sampling_method method : {RC::MIN_CUT, RC::K_MEANS, RC::HIERARCHICAL}) {
     for(bool weighted : {false, true}) {
@@ -373,7 +374,7 @@ TEST(PartitionFunction, SameSeedSameValuesForAnyNumberOfThreads)
 
 TEST(PartitionFunction, ConvergenceToleranceStopsEarly)
 {
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(dumbbell(), 0.3);
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(dumbbell(), 0.3);
   const Mesh m = to_mesh(lm);
   RC::Partition_function_result r;
   values_of(m, RC::parameters::number_of_samples(4000).convergence_tolerance(0.02), &r);
@@ -396,10 +397,10 @@ TEST(PartitionFunction, ConvergenceToleranceStopsEarly)
 TEST(PartitionFunction, SeparatePiecesAreCutApartAndPolyhedronWorks)
 {
   // Two boxes apart: linked weakly, so that samples with one seed in each cut between them.
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::separate_boxes(2, 1.0), 0.2);
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(SAS::separate_boxes(2, 1.0), 0.2);
   typedef CGAL::Polyhedron_3<Kernel> Polyhedron;
   Polyhedron p;
-  SAI::fill_polygon_mesh(lm, p);
+  SAS::fill_polygon_mesh(lm, p);
   std::map<Polyhedron::Halfedge_handle, double> by_halfedge;
   std::map<boost::graph_traits<Polyhedron>::edge_descriptor, double> values;
   RC::partition_function(p, boost::make_assoc_property_map(values), RC::parameters::number_of_samples(100));
@@ -417,14 +418,14 @@ TEST(PartitionFunction, SeparatePiecesAreCutApartAndPolyhedronWorks)
   std::vector<std::size_t> labels;
   for(auto f : faces(copy))
     labels.push_back(segment[f]);
-  EXPECT_EQ(SAI::rand_index(labels, lm.labels), 1.0) << "each box is one segment";
+  EXPECT_EQ(SAS::rand_index(labels, lm.labels), 1.0) << "each box is one segment";
 }
 
 TEST(PartitionFunction, ExtremeCoordinatesGiveTheSameValues)
 {
   // Coordinates scaled by 2^500 and 2^-500 (an exact scaling): squared lengths and areas would
   // overflow or underflow; the values must be those of the mesh as it is.
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(dumbbell(), 0.4);
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(dumbbell(), 0.4);
   const Mesh m = to_mesh(lm);
   const auto np = RC::parameters::number_of_samples(64).random_seed(2);
   const std::vector<double> reference = values_of(m, np);
@@ -445,7 +446,7 @@ TEST(PartitionFunction, ExtremeCoordinatesGiveTheSameValues)
 
 TEST(PartitionFunction, CutsBetweenSeparatePiecesCrossNoEdge)
 {
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(SAI::separate_boxes(2, 1.0), 0.25);
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(SAS::separate_boxes(2, 1.0), 0.25);
   const Mesh m = to_mesh(lm);
   const auto cuts = RC::most_consistent_cuts(m, RC::parameters::number_of_samples(100));
   ASSERT_FALSE(cuts.empty());
@@ -459,7 +460,7 @@ TEST(PartitionFunction, CutsBetweenSeparatePiecesCrossNoEdge)
   std::vector<std::size_t> side(num_faces(m), 0);
   for(face_descriptor f : top.smaller_side)
     side[f] = 1;
-  EXPECT_EQ(SAI::rand_index(side, lm.labels), 1.0);
+  EXPECT_EQ(SAS::rand_index(side, lm.labels), 1.0);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -489,15 +490,15 @@ TEST(Segmentation, RecoversTheKnownParts)
   struct Case
   {
     const char* name;
-    SAI::Procedural_shape shape;
+    SAS::Procedural_shape shape;
     double cell;
   };
-  const std::vector<Case> cases = {{"three spheres", SAI::three_sphere_chain(2), 0.2},
-                                   {"body with head", SAI::body_with_limbs(3, true), 0.15},
-                                   {"star", SAI::star(5, 4), 0.16}};
+  const std::vector<Case> cases = {{"three spheres", SAS::three_sphere_chain(2), 0.2},
+                                   {"body with head", SAS::body_with_limbs(3, true), 0.15},
+                                   {"star", SAS::star(5, 4), 0.16}};
   for(const Case& c : cases) {
     SCOPED_TRACE(c.name);
-    const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(c.shape, c.cell);
+    const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(c.shape, c.cell);
     Mesh m = to_mesh(lm);
     auto seg = m.add_property_map<face_descriptor, std::size_t>("f:s", 99).first;
     const std::size_t k = RC::segment_with_partition_function(
@@ -513,8 +514,8 @@ TEST(Segmentation, RecoversTheKnownParts)
     }
     for(std::size_t l = 0; l + 1 < k; ++l)
       EXPECT_GE(area[l], area[l + 1]) << "segments are numbered by decreasing area";
-    EXPECT_GE(SAI::rand_index(labels, lm.labels), 0.95);
-    EXPECT_GE(SAI::matched_overlap(labels, lm.labels, &areas), 0.95);
+    EXPECT_GE(SAS::rand_index(labels, lm.labels), 0.95);
+    EXPECT_GE(SAS::matched_overlap(labels, lm.labels, &areas), 0.95);
   }
 }
 
@@ -560,7 +561,7 @@ TEST(BadInput, MeshesAndParametersAreRefused)
   v.assign(4, 0.0);
   EXPECT_THROW(RC::partition_function(quad, map), CGAL::Shape_analysis::Bad_input);
 
-  const SAI::Labelled_triangle_mesh lm = SAI::mesh_procedural_shape(dumbbell(), 0.4);
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(dumbbell(), 0.4);
   Mesh m = to_mesh(lm);
   Mesh nan = m;
   nan.point(*vertices(nan).begin()) = Point(std::numeric_limits<double>::quiet_NaN(), 0, 0);

@@ -12,7 +12,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <CGAL/Randomized_cuts/register_meshes.h>
-#include <CGAL/Shape_analysis/internal/Procedural_shapes.h>
+#include <Shape_analysis_support/Procedural_shapes.h>
 #include <CGAL/Shape_analysis/internal/Similarity_alignment.h>
 
 #include <gtest/gtest.h>
@@ -32,6 +32,7 @@ typedef Mesh::Vertex_index vertex_descriptor;
 
 namespace RC = CGAL::Randomized_cuts;
 namespace SAI = CGAL::Shape_analysis::internal;
+namespace SAS = CGAL::Shape_analysis_support;
 using SAI::Matrix_3d;
 using SAI::Similarity_3d;
 using SAI::Vector_3d;
@@ -44,8 +45,8 @@ const double pi = 3.14159265358979323846;
 // 120 degrees about a skew axis, scale 1.7, a translation of several shape sizes.
 Similarity_3d large_motion()
 {
-  const SAI::Rigid_transform r =
-    SAI::Rigid_transform::from_axis_angle(Vector_3d(1, 2, -0.7), 2 * pi / 3, Vector_3d(3, -5, 2));
+  const SAS::Rigid_transform r =
+    SAS::Rigid_transform::from_axis_angle(Vector_3d(1, 2, -0.7), 2 * pi / 3, Vector_3d(3, -5, 2));
   Similarity_3d t;
   t.rotation = r.rotation;
   t.scale = 1.7;
@@ -53,7 +54,7 @@ Similarity_3d large_motion()
   return t;
 }
 
-void apply(SAI::Labelled_triangle_mesh& m, const Similarity_3d& t)
+void apply(SAS::Labelled_triangle_mesh& m, const Similarity_3d& t)
 {
   for(auto& p : m.points) {
     const Vector_3d q = t(Vector_3d(p[0], p[1], p[2]));
@@ -61,21 +62,21 @@ void apply(SAI::Labelled_triangle_mesh& m, const Similarity_3d& t)
   }
 }
 
-Mesh to_mesh(const SAI::Labelled_triangle_mesh& m)
+Mesh to_mesh(const SAS::Labelled_triangle_mesh& m)
 {
   Mesh mesh;
-  SAI::fill_polygon_mesh(m, mesh);
+  SAS::fill_polygon_mesh(m, mesh);
   return mesh;
 }
 
 // A four-legged body with a head: no rotational symmetry (only a mirror one, which no rotation
 // reproduces). Cell 0.17: about 5000 faces.
-SAI::Labelled_triangle_mesh animal(std::uint64_t seed = 0, double cell = 0.17)
+SAS::Labelled_triangle_mesh animal(std::uint64_t seed = 0, double cell = 0.17)
 {
-  return SAI::mesh_procedural_shape(SAI::body_with_limbs(seed, true), cell);
+  return SAS::mesh_procedural_shape(SAS::body_with_limbs(seed, true), cell);
 }
 
-double diagonal(const SAI::Labelled_triangle_mesh& m)
+double diagonal(const SAS::Labelled_triangle_mesh& m)
 {
   Vector_3d lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for(std::size_t v = 0; v < m.points.size(); ++v) {
@@ -97,7 +98,7 @@ Similarity_3d to_similarity(const RC::Registration_result<Kernel>& r)
 }
 
 // The largest distance between the images of the vertices of `m` under `a` and `b`.
-double largest_displacement(const SAI::Labelled_triangle_mesh& m, const Similarity_3d& a,
+double largest_displacement(const SAS::Labelled_triangle_mesh& m, const Similarity_3d& a,
                             const Similarity_3d& b)
 {
   double d = 0;
@@ -113,7 +114,7 @@ struct Transform_error
 };
 
 Transform_error error_of(const RC::Registration_result<Kernel>& r, const Similarity_3d& truth,
-                         const SAI::Labelled_triangle_mesh& source, double target_diagonal)
+                         const SAS::Labelled_triangle_mesh& source, double target_diagonal)
 {
   const Similarity_3d t = to_similarity(r);
   Transform_error e;
@@ -236,11 +237,11 @@ TEST(SimilaritySolver, AxisOrientationsAndPrincipalFrame)
 TEST(Icp, ConvergesToTheExactTransformAndTrimsOutliers)
 {
   // Points sampled on a shape and on its moved copy; 5% more target points are far outliers.
-  const SAI::Labelled_triangle_mesh source_mesh = animal(0, 0.2);
-  SAI::Labelled_triangle_mesh target_mesh = source_mesh;
+  const SAS::Labelled_triangle_mesh source_mesh = animal(0, 0.2);
+  SAS::Labelled_triangle_mesh target_mesh = source_mesh;
   const Similarity_3d truth = large_motion();
   apply(target_mesh, truth);
-  const auto triangles = [](const SAI::Labelled_triangle_mesh& m) {
+  const auto triangles = [](const SAS::Labelled_triangle_mesh& m) {
     std::vector<std::array<Vector_3d, 3>> t;
     for(const auto& f : m.triangles)
       t.push_back({m.point(f[0]), m.point(f[1]), m.point(f[2])});
@@ -262,7 +263,7 @@ TEST(Icp, ConvergesToTheExactTransformAndTrimsOutliers)
   // A start 6 degrees, 5% of scale and a bit of translation away.
   Similarity_3d start = truth;
   start.rotation = SAI::multiply(
-    SAI::Rigid_transform::from_axis_angle(Vector_3d(0, 1, 1), 0.1, Vector_3d(0.0)).rotation,
+    SAS::Rigid_transform::from_axis_angle(Vector_3d(0, 1, 1), 0.1, Vector_3d(0.0)).rotation,
     truth.rotation);
   start.scale = 1.6;
   start.translation = truth.translation + Vector_3d(0.1, 0, -0.1);
@@ -319,8 +320,8 @@ TEST(Icp, ConvergesToTheExactTransformAndTrimsOutliers)
 
 TEST(Registration, RecoversALargeSimilarity)
 {
-  const SAI::Labelled_triangle_mesh source = animal(0);
-  SAI::Labelled_triangle_mesh target = source;
+  const SAS::Labelled_triangle_mesh source = animal(0);
+  SAS::Labelled_triangle_mesh target = source;
   const Similarity_3d truth = large_motion();
   apply(target, truth);
   const Mesh s = to_mesh(source), t = to_mesh(target);
@@ -361,8 +362,8 @@ TEST(Registration, RecoversALargeSimilarity)
 
 TEST(Registration, NoisyVerticesAndUniformSampling)
 {
-  const SAI::Labelled_triangle_mesh source = animal(0);
-  SAI::Labelled_triangle_mesh target = source;
+  const SAS::Labelled_triangle_mesh source = animal(0);
+  SAS::Labelled_triangle_mesh target = source;
   const Similarity_3d truth = large_motion();
   apply(target, truth);
   const double diag = diagonal(target);
@@ -389,8 +390,8 @@ TEST(Registration, NoisyVerticesAndUniformSampling)
 TEST(Registration, ShapesOfTheSameClass)
 {
   // Two different four-legged bodies (sizes and positions jittered), the second moved far away.
-  const SAI::Labelled_triangle_mesh a = animal(1);
-  SAI::Labelled_triangle_mesh b = animal(2);
+  const SAS::Labelled_triangle_mesh a = animal(1);
+  SAS::Labelled_triangle_mesh b = animal(2);
   const Similarity_3d truth = large_motion();
   apply(b, truth);
   const Mesh ma = to_mesh(a), mb = to_mesh(b);
@@ -408,11 +409,11 @@ TEST(Registration, ShapesOfTheSameClass)
 TEST(Registration, TargetVertexPointMap)
 {
   // The target is the same mesh seen through a vertex point map that moves it.
-  const SAI::Labelled_triangle_mesh source = animal(0);
+  const SAS::Labelled_triangle_mesh source = animal(0);
   Mesh s = to_mesh(source);
   const Similarity_3d truth = large_motion();
   auto moved = s.add_property_map<vertex_descriptor, Point>("v:moved").first;
-  SAI::Labelled_triangle_mesh target = source;
+  SAS::Labelled_triangle_mesh target = source;
   apply(target, truth);
   for(vertex_descriptor v : vertices(s)) {
     const Point& p = s.point(v);
@@ -428,8 +429,8 @@ TEST(Registration, TargetVertexPointMap)
 
 TEST(Registration, DeterministicForAnyThreadCount)
 {
-  const SAI::Labelled_triangle_mesh source = animal(0, 0.2);
-  SAI::Labelled_triangle_mesh target = animal(5, 0.2);
+  const SAS::Labelled_triangle_mesh source = animal(0, 0.2);
+  SAS::Labelled_triangle_mesh target = animal(5, 0.2);
   apply(target, large_motion());
   const Mesh s = to_mesh(source), t = to_mesh(target);
   const auto np = RC::parameters::number_of_samples(30).number_of_points(1000).random_seed(9);
@@ -465,12 +466,12 @@ TEST(Registration, DeterministicForAnyThreadCount)
 TEST(Registration, WorksWithPolyhedron)
 {
   typedef CGAL::Polyhedron_3<Kernel> Polyhedron;
-  const SAI::Labelled_triangle_mesh source = SAI::mesh_procedural_shape(SAI::three_sphere_chain(3), 0.3);
-  SAI::Labelled_triangle_mesh target = source;
+  const SAS::Labelled_triangle_mesh source = SAS::mesh_procedural_shape(SAS::three_sphere_chain(3), 0.3);
+  SAS::Labelled_triangle_mesh target = source;
   apply(target, large_motion());
   Polyhedron s, t;
-  SAI::fill_polygon_mesh(source, s);
-  SAI::fill_polygon_mesh(target, t);
+  SAS::fill_polygon_mesh(source, s);
+  SAS::fill_polygon_mesh(target, t);
   const auto r = RC::register_meshes(s, t, RC::parameters::number_of_samples(20).number_of_points(800));
   // The chain is nearly symmetric about its axis: only the distance is a meaningful check.
   EXPECT_LT(r.rms_distance, 1e-6 * diagonal(target));
@@ -479,7 +480,7 @@ TEST(Registration, WorksWithPolyhedron)
 
 TEST(BadInput, MeshesAndParameters)
 {
-  const Mesh good = to_mesh(SAI::mesh_procedural_shape(SAI::three_sphere_chain(0), 0.4));
+  const Mesh good = to_mesh(SAS::mesh_procedural_shape(SAS::three_sphere_chain(0), 0.4));
   const auto quick = RC::parameters::number_of_samples(5).number_of_points(100);
   auto expect_bad = [](const auto& call, const std::string& part) {
     try {

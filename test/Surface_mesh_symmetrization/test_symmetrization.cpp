@@ -17,10 +17,11 @@
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 
 #include <CGAL/Surface_mesh_symmetrization/detect_reflective_symmetries.h>
-#include <CGAL/Surface_mesh_symmetrization/internal/Procedural_symmetric_shapes.h>
+#include <Shape_analysis_support/Procedural_symmetric_shapes.h>
 #include <CGAL/Surface_mesh_symmetrization/symmetrize.h>
 #include <CGAL/Surface_mesh_symmetrization/transfer_vertex_attribute.h>
-#include <CGAL/Shape_analysis/internal/Procedural_shapes.h>
+#include <Shape_analysis_support/Procedural_shapes.h>
+#include <Shape_analysis_support/Symmetry_metrics.h>
 #include <CGAL/Shape_analysis/internal/Random.h>
 
 #include <gtest/gtest.h>
@@ -42,12 +43,14 @@ typedef CGAL::Surface_mesh<Point> Mesh;
 namespace SY = CGAL::Surface_mesh_symmetrization;
 namespace SYI = CGAL::Surface_mesh_symmetrization::internal;
 namespace SAI = CGAL::Shape_analysis::internal;
+namespace SAS = CGAL::Shape_analysis_support;
 typedef SY::Symmetry<Kernel> Symmetry;
 typedef SAI::Vector_3d Vector_3d;
+typedef SAS::Symmetry_metrics<Point> Metrics;
 
 const double pi = 3.14159265358979323846;
 
-Mesh to_mesh(const SYI::Procedural_mesh& m)
+Mesh to_mesh(const SAS::Procedural_mesh& m)
 {
   Mesh mesh;
   std::vector<Mesh::Vertex_index> v;
@@ -58,10 +61,10 @@ Mesh to_mesh(const SYI::Procedural_mesh& m)
   return mesh;
 }
 
-Mesh to_mesh(const SAI::Labelled_triangle_mesh& m)
+Mesh to_mesh(const SAS::Labelled_triangle_mesh& m)
 {
   Mesh mesh;
-  SAI::fill_polygon_mesh(m, mesh);
+  SAS::fill_polygon_mesh(m, mesh);
   return mesh;
 }
 
@@ -75,13 +78,13 @@ Mesh read_data_mesh(const std::string& name)
 }
 
 // A rotation about a skew axis and a translation.
-SAI::Rigid_transform motion(int k)
+SAS::Rigid_transform motion(int k)
 {
   const Vector_3d axes[3] = {SAI::Vector_3d(1, 2, -0.7), SAI::Vector_3d(-0.3, 0.4, 1), SAI::Vector_3d(0.9, -1, 0.2)};
-  return SAI::Rigid_transform::from_axis_angle(axes[k % 3], 0.7 + 0.9 * k, SAI::Vector_3d(3 - k, -5 + 2 * k, 2));
+  return SAS::Rigid_transform::from_axis_angle(axes[k % 3], 0.7 + 0.9 * k, SAI::Vector_3d(3 - k, -5 + 2 * k, 2));
 }
 
-void move(Mesh& m, const SAI::Rigid_transform& t)
+void move(Mesh& m, const SAS::Rigid_transform& t)
 {
   for(auto v : vertices(m)) {
     const Point& p = m.point(v);
@@ -116,14 +119,6 @@ SYI::Surface surface_of(const Mesh& m)
   return SYI::read_mesh(m, get(CGAL::vertex_point, m), SAI::Point_to_vector<Kernel>{Kernel()}, "test").surface;
 }
 
-std::vector<Vector_3d> points_of(const Mesh& m)
-{
-  std::vector<Vector_3d> p;
-  for(auto v : vertices(m))
-    p.emplace_back(m.point(v).x(), m.point(v).y(), m.point(v).z());
-  return p;
-}
-
 // RMS distance between corresponding vertices, relative to the bounding-box diagonal of `a`.
 double rms_vertex_distance(const Mesh& a, const Mesh& b)
 {
@@ -143,10 +138,10 @@ double rms_vertex_distance(const Mesh& a, const Mesh& b)
 TEST(Detection, ProceduralShapeInRandomPosesGivesItsPlaneWithinHalfADegree)
 {
   // A four-legged body with a head: symmetric about y = 0 only, non-symmetric connectivity.
-  const Mesh original = to_mesh(SAI::mesh_procedural_shape(SAI::body_with_limbs(0, true), 0.12));
+  const Mesh original = to_mesh(SAS::mesh_procedural_shape(SAS::body_with_limbs(0, true), 0.12));
   for(int k = 0; k < 3; ++k) {
     Mesh m = original;
-    const SAI::Rigid_transform t = motion(k);
+    const SAS::Rigid_transform t = motion(k);
     move(m, t);
     const std::vector<Symmetry> s = detect(m);
     ASSERT_FALSE(s.empty());
@@ -167,7 +162,7 @@ TEST(Detection, ProceduralShapeInRandomPosesGivesItsPlaneWithinHalfADegree)
 
 TEST(Detection, ExactlySymmetricMeshGivesAPerfectScore)
 {
-  const Mesh m = to_mesh(SYI::symmetric_blob(24, 48));
+  const Mesh m = to_mesh(SAS::symmetric_blob(24, 48));
   const std::vector<Symmetry> s = detect(m);
   ASSERT_FALSE(s.empty());
   EXPECT_LT(angle_degrees(plane_of(s.front()).first, Vector_3d(0, 1, 0)), 0.05);
@@ -249,7 +244,7 @@ TEST(ClosestPoints, RefittedIndexAnswersAsANewOne)
   const Mesh m = read_data_mesh("head.off");
   const SYI::Surface s = surface_of(m);
   const double D = s.diagonal();
-  SAI::Procedural_random rng(11);
+  SAS::Procedural_random rng(11);
   SYI::Surface_index moved(s);
   std::vector<Vector_3d> p = s.points;
   for(int round = 0; round < 3; ++round) {
@@ -290,11 +285,11 @@ TEST(ClosestPoints, RefittedIndexAnswersAsANewOne)
 
 TEST(Symmetrization, WarpedSymmetricShapeComesBackCloseToTheUnwarpedShape)
 {
-  const SYI::Procedural_mesh blob = SYI::symmetric_blob(24, 48);
+  const SAS::Procedural_mesh blob = SAS::symmetric_blob(24, 48);
   const Mesh unwarped = to_mesh(blob);
-  SYI::Procedural_mesh warped_blob = blob;
+  SAS::Procedural_mesh warped_blob = blob;
   for(auto& p : warped_blob.points)
-    p = SYI::asymmetric_warp(p, 0.005);
+    p = SAS::asymmetric_warp(p, 0.005);
   Mesh m = to_mesh(warped_blob);
   const Mesh warped = m;
   const double distance_before = rms_vertex_distance(unwarped, warped);
@@ -305,16 +300,16 @@ TEST(Symmetrization, WarpedSymmetricShapeComesBackCloseToTheUnwarpedShape)
   EXPECT_LT(r.symmetry_error_after, 1e-4);
   EXPECT_LT(r.symmetry_error_after, 0.1 * r.symmetry_error_before);
   // Less distortion than moving each vertex halfway to the image of its mirror point.
-  const SYI::Surface surface = surface_of(warped);
-  const std::vector<Vector_3d> naive = SYI::naive_symmetrization(surface, SYI::affine_of(s, "test"), 0);
-  EXPECT_LT(r.distortion, SYI::edge_distortion(surface, surface.points, naive));
-  EXPECT_LT(r.symmetry_error_after, SYI::symmetry_error(surface, naive, SYI::affine_of(s, "test"), 0));
+  const Metrics metrics(warped);
+  const std::vector<Vector_3d> naive = metrics.naive_symmetrization(metrics.points(), s, 0);
+  EXPECT_LT(r.distortion, metrics.edge_distortion(metrics.points(), naive));
+  EXPECT_LT(r.symmetry_error_after, metrics.symmetry_error(naive, s, 0));
   // The result's figures are those of the mesh as written.
   EXPECT_EQ(r.symmetric_points.size(), num_vertices(m));
   std::size_t i = 0;
   for(auto v : vertices(m))
     EXPECT_EQ(m.point(v), r.symmetric_points[i++]);
-  EXPECT_NEAR(r.distortion, SYI::edge_distortion(surface, surface.points, points_of(m)), 1e-12);
+  EXPECT_NEAR(r.distortion, metrics.edge_distortion(metrics.points(), Metrics::positions_of(m)), 1e-12);
   ASSERT_FALSE(r.symmetry_errors.empty());
   EXPECT_EQ(r.symmetry_errors.size(), r.iteration_alphas.size());
   EXPECT_EQ(r.iteration_alphas.back(), 1.0);
@@ -328,9 +323,9 @@ TEST(Symmetrization, NearlySymmetricCgalMeshBecomesSymmetric)
   const auto r = SY::symmetrize(m, std::vector<Symmetry>{s});
   EXPECT_LT(r.symmetry_error_after, 0.2 * r.symmetry_error_before);
   EXPECT_LT(r.symmetry_error_after, 1e-5);
-  const SYI::Surface surface = surface_of(input);
-  const std::vector<Vector_3d> naive = SYI::naive_symmetrization(surface, SYI::affine_of(s, "test"), 0);
-  EXPECT_LT(r.distortion, SYI::edge_distortion(surface, surface.points, naive));
+  const Metrics metrics(input);
+  const std::vector<Vector_3d> naive = metrics.naive_symmetrization(metrics.points(), s, 0);
+  EXPECT_LT(r.distortion, metrics.edge_distortion(metrics.points(), naive));
   // The residuals are small: the triceratops is nearly symmetric.
   EXPECT_LT(rms_vertex_distance(input, m), 1e-3);
 }
@@ -362,12 +357,10 @@ TEST(Symmetrization, IsometricRefinementReachesTheTargetWithLessDistortionThanNa
     const auto b = SY::symmetrize(refined, std::vector<Symmetry>{s});
     EXPECT_GT(a.symmetry_error_after, 1e-4) << name;
     EXPECT_LT(b.symmetry_error_after, 1e-4) << name;
-    const SYI::Surface surface = surface_of(input);
-    const std::vector<Vector_3d> naive = SYI::naive_symmetrization(surface, SYI::affine_of(s, "test"), 0);
-    EXPECT_LT(b.distortion, SYI::edge_distortion(surface, surface.points, naive)) << name;
-    EXPECT_NEAR(b.symmetry_error_after, SYI::symmetry_error(surface, points_of(refined), SYI::affine_of(s, "test"), 0),
-                1e-12)
-      << name;
+    const Metrics metrics(input);
+    const std::vector<Vector_3d> naive = metrics.naive_symmetrization(metrics.points(), s, 0);
+    EXPECT_LT(b.distortion, metrics.edge_distortion(metrics.points(), naive)) << name;
+    EXPECT_NEAR(b.symmetry_error_after, metrics.symmetry_error(Metrics::positions_of(refined), s, 0), 1e-12) << name;
   }
 }
 
@@ -379,12 +372,10 @@ TEST(Symmetrization, AtEqualErrorCoarseCurvedMeshDistortsLessThanNaive)
   // until it is as symmetric as the symmetrization's result distorts more.
   const Mesh input = read_data_mesh("homer.off");
   const Symmetry s = detect(input, 1).front();
-  const SYI::Surface surface = surface_of(input);
-  const SYI::Affine_3d t = SYI::affine_of(s, "test");
-  SYI::Surface naive = surface;
-  naive.points = SYI::naive_symmetrization(surface, t, 0);
-  const double naive_error = SYI::symmetry_error(surface, naive.points, t, 0);
-  const double naive_distortion = SYI::edge_distortion(surface, surface.points, naive.points);
+  const Metrics metrics(input);
+  std::vector<Vector_3d> naive = metrics.naive_symmetrization(metrics.points(), s, 0);
+  const double naive_error = metrics.symmetry_error(naive, s, 0);
+  const double naive_distortion = metrics.edge_distortion(metrics.points(), naive);
   Mesh stopped = input, full = input;
   const auto a = SY::symmetrize(stopped, std::vector<Symmetry>{s}, SY::parameters::target_symmetry_error(naive_error));
   EXPECT_LE(a.symmetry_error_after, naive_error);
@@ -393,10 +384,10 @@ TEST(Symmetrization, AtEqualErrorCoarseCurvedMeshDistortsLessThanNaive)
   EXPECT_LT(b.symmetry_error_after, 1e-4);
   double e = naive_error;
   for(int pass = 1; pass < 60 && e > b.symmetry_error_after; ++pass) {
-    naive.points = SYI::naive_symmetrization(naive, t, 0);
-    e = SYI::symmetry_error(surface, naive.points, t, 0);
+    naive = metrics.naive_symmetrization(naive, s, 0);
+    e = metrics.symmetry_error(naive, s, 0);
   }
-  EXPECT_LT(2 * b.distortion, SYI::edge_distortion(surface, surface.points, naive.points));
+  EXPECT_LT(2 * b.distortion, metrics.edge_distortion(metrics.points(), naive));
 }
 
 TEST(Symmetrization, MeshesTooLargeForTheRefinementTakeGrowingConstrainedWeights)
@@ -418,9 +409,10 @@ TEST(Symmetrization, MeshesTooLargeForTheRefinementTakeGrowingConstrainedWeights
   const SYI::Symmetrization_output b = SYI::Symmetrizer(surface, {ss}, escalating).run();
   EXPECT_LT(b.error_after, 0.25 * a.error_after);
   EXPECT_GT(b.iterations.size(), a.iterations.size());
-  const std::vector<Vector_3d> naive = SYI::naive_symmetrization(surface, ss.transform, 0);
-  EXPECT_LT(b.distortion, SYI::edge_distortion(surface, surface.points, naive));
-  EXPECT_NEAR(b.error_after, SYI::symmetry_error(surface, b.points, ss.transform, 0), 1e-12);
+  const Metrics metrics(input);
+  const std::vector<Vector_3d> naive = metrics.naive_symmetrization(metrics.points(), s, 0);
+  EXPECT_LT(b.distortion, metrics.edge_distortion(metrics.points(), naive));
+  EXPECT_NEAR(b.error_after, metrics.symmetry_error(b.points, s, 0), 1e-12);
 }
 
 TEST(Symmetrization, LargeMeshReachesTheTargetWithLessDistortionThanNaive)
@@ -436,9 +428,9 @@ TEST(Symmetrization, LargeMeshReachesTheTargetWithLessDistortionThanNaive)
   const auto r = SY::symmetrize(result, std::vector<Symmetry>{s});
   EXPECT_LT(r.symmetry_error_after, 1e-4);
   EXPECT_GT(r.symmetry_error_before, 50 * r.symmetry_error_after);
-  const SYI::Surface surface = surface_of(input);
-  const std::vector<Vector_3d> naive = SYI::naive_symmetrization(surface, SYI::affine_of(s, "test"), 0);
-  EXPECT_LT(r.distortion, SYI::edge_distortion(surface, surface.points, naive));
+  const Metrics metrics(input);
+  const std::vector<Vector_3d> naive = metrics.naive_symmetrization(metrics.points(), s, 0);
+  EXPECT_LT(r.distortion, metrics.edge_distortion(metrics.points(), naive));
 }
 
 TEST(Symmetrization, LargerFinalWeightTradesDistortionForSymmetry)
@@ -501,10 +493,10 @@ TEST(Symmetrization, DoesNotDependOnTheThreadCount)
 
 TEST(Symmetrization, MultiresolutionLevelsAreMadeAndUsed)
 {
-  Mesh m = to_mesh(SYI::symmetric_blob(60, 120)); // 7,000 vertices
+  Mesh m = to_mesh(SAS::symmetric_blob(60, 120)); // 7,000 vertices
   for(auto v : vertices(m)) {
     const Point& p = m.point(v);
-    const auto q = SYI::asymmetric_warp({{p.x(), p.y(), p.z()}}, 0.02);
+    const auto q = SAS::asymmetric_warp({{p.x(), p.y(), p.z()}}, 0.02);
     m.point(v) = Point(q[0], q[1], q[2]);
   }
   const auto r = SY::symmetrize(m, std::vector<Symmetry>{SY::reflective_symmetry<Kernel>(Plane(0, 1, 0, 0))},
@@ -519,7 +511,7 @@ TEST(Symmetrization, MultiresolutionLevelsAreMadeAndUsed)
 
 TEST(Symmetrization, SymmetricMapOfASymmetricMeshIsExact)
 {
-  const Mesh m = to_mesh(SYI::symmetric_blob(20, 40, true));
+  const Mesh m = to_mesh(SAS::symmetric_blob(20, 40, true));
   const double diagonal = surface_of(m).diagonal();
   // The reflection y -> -y, and the rotation by pi about z (an affine symmetry).
   const Symmetry reflection = SY::reflective_symmetry<Kernel>(Plane(0, 1, 0, 0));
@@ -550,9 +542,9 @@ TEST(Symmetrization, SymmetricMapOfASymmetricMeshIsExact)
 
 TEST(Symmetrization, RotationalSymmetryCanBeEnforced)
 {
-  SYI::Procedural_mesh blob = SYI::symmetric_blob(20, 40, true);
+  SAS::Procedural_mesh blob = SAS::symmetric_blob(20, 40, true);
   for(auto& p : blob.points)
-    p = SYI::asymmetric_warp(p, 0.005);
+    p = SAS::asymmetric_warp(p, 0.005);
   Mesh m = to_mesh(blob);
   const Symmetry rotation =
     SY::affine_symmetry<Kernel>(CGAL::Aff_transformation_3<Kernel>(-1, 0, 0, 0, -1, 0, 0, 0, 1));
@@ -563,9 +555,9 @@ TEST(Symmetrization, RotationalSymmetryCanBeEnforced)
 TEST(Symmetrization, PartialSymmetriesWeightedBySupport)
 {
   // Two symmetries of the rotational blob at once, both with their support.
-  SYI::Procedural_mesh blob = SYI::symmetric_blob(20, 40, true);
+  SAS::Procedural_mesh blob = SAS::symmetric_blob(20, 40, true);
   for(auto& p : blob.points)
-    p = SYI::asymmetric_warp(p, 0.005);
+    p = SAS::asymmetric_warp(p, 0.005);
   Mesh m = to_mesh(blob);
   Symmetry a = SY::reflective_symmetry<Kernel>(Plane(0, 1, 0, 0));
   Symmetry b = SY::affine_symmetry<Kernel>(CGAL::Aff_transformation_3<Kernel>(-1, 0, 0, 0, -1, 0, 0, 0, 1));
@@ -579,14 +571,14 @@ TEST(Symmetrization, PartialSymmetriesWeightedBySupport)
 TEST(Symmetrization, PolyhedronAndVertexPointMap)
 {
   typedef CGAL::Polyhedron_3<Kernel> Polyhedron;
-  const SYI::Procedural_mesh blob = SYI::symmetric_blob(16, 32);
+  const SAS::Procedural_mesh blob = SAS::symmetric_blob(16, 32);
   Polyhedron p;
   {
-    SAI::Labelled_triangle_mesh l;
+    SAS::Labelled_triangle_mesh l;
     l.points = blob.points;
     l.triangles = blob.triangles;
     l.labels.assign(blob.triangles.size(), 0);
-    SAI::fill_polygon_mesh(l, p);
+    SAS::fill_polygon_mesh(l, p);
   }
   std::vector<Symmetry> s;
   SY::detect_reflective_symmetries(p, std::back_inserter(s));
@@ -613,7 +605,7 @@ TEST(Symmetrization, PolyhedronAndVertexPointMap)
 
 TEST(Transfer, LeftSideValuesAreCopiedOntoTheRightSide)
 {
-  const Mesh m = to_mesh(SYI::symmetric_blob(24, 48));
+  const Mesh m = to_mesh(SAS::symmetric_blob(24, 48));
   Mesh mesh = m;
   auto value = mesh.add_property_map<Mesh::Vertex_index, double>("v:value", 0.0).first;
   auto colour = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:colour").first;
@@ -645,9 +637,9 @@ TEST(Transfer, LeftSideValuesAreCopiedOntoTheRightSide)
 
 TEST(Transfer, BlendMakesTheAttributeSymmetricThroughTheSymmetrizedMap)
 {
-  SYI::Procedural_mesh blob = SYI::symmetric_blob(24, 48);
+  SAS::Procedural_mesh blob = SAS::symmetric_blob(24, 48);
   for(auto& p : blob.points)
-    p = SYI::asymmetric_warp(p, 0.005);
+    p = SAS::asymmetric_warp(p, 0.005);
   Mesh mesh = to_mesh(blob);
   const Symmetry s = SY::reflective_symmetry<Kernel>(Plane(0, 1, 0, 0));
   const auto r = SY::symmetrize(mesh, std::vector<Symmetry>{s});
@@ -695,7 +687,7 @@ TEST(BadInput, RefusedWithAReason)
   EXPECT_THROW(SY::detect_reflective_symmetries(quad, std::back_inserter(out)), Bad_input);
 
   // NaN coordinates.
-  Mesh nan = to_mesh(SYI::symmetric_blob(8, 8));
+  Mesh nan = to_mesh(SAS::symmetric_blob(8, 8));
   nan.point(*vertices(nan).begin()) = Point(std::nan(""), 0, 0);
   EXPECT_THROW(SY::detect_reflective_symmetries(nan, std::back_inserter(out)), Bad_input);
   EXPECT_THROW(SY::symmetrize(nan, std::vector<Symmetry>{plane}), Bad_input);
@@ -713,7 +705,7 @@ TEST(BadInput, RefusedWithAReason)
   EXPECT_THROW(SY::reflective_symmetry<Kernel>(Plane(0, 0, 0, 1)), Bad_input);
   EXPECT_THROW(SY::reflective_symmetry<Kernel>(Plane(std::nan(""), 1, 0, 0)), Bad_input);
   EXPECT_THROW(SY::affine_symmetry<Kernel>(CGAL::Aff_transformation_3<Kernel>(1, 0, 0, 0, 1, 0, 0, 0, 0)), Bad_input);
-  Mesh m = to_mesh(SYI::symmetric_blob(8, 8));
+  Mesh m = to_mesh(SAS::symmetric_blob(8, 8));
   Symmetry broken = plane;
   broken.transformation = CGAL::Aff_transformation_3<Kernel>(0, 0, 0, 0, 0, 0, 0, 0, 0, 1);
   EXPECT_THROW(SY::symmetrize(m, std::vector<Symmetry>{broken}), Bad_input);
@@ -738,7 +730,7 @@ TEST(BadInput, RefusedWithAReason)
   // Enhancement and transfer.
   const auto r = SY::symmetrize(m, std::vector<Symmetry>{plane});
   EXPECT_THROW(SY::enhance_symmetry(m, r, std::nan("")), Bad_input);
-  Mesh other = to_mesh(SYI::symmetric_blob(10, 10));
+  Mesh other = to_mesh(SAS::symmetric_blob(10, 10));
   EXPECT_THROW(SY::restore_asymmetry(other, r), Bad_input);
   auto value = m.add_property_map<Mesh::Vertex_index, double>("v:value", 0.0).first;
   const Symmetry rotation =

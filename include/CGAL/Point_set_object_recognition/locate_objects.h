@@ -92,35 +92,29 @@ constexpr double foot_height = 1.0;
 // point within `floating_radius` of its location floats (the head of a lamp post, a tree crown).
 constexpr double floating_height = 2.0, floating_radius = 3.0;
 
-inline Localization_result locate_objects(const std::vector<std::array<double, 3>>& p, const Localization_options& o)
+// Per point its cluster by the method of `o` (`no_component` for none); their number.
+inline std::vector<std::uint32_t> clusters_by_method(const std::vector<std::array<double, 3>>& p,
+                                                     const Localization_options& o, const std::array<double, 3>& lo,
+                                                     const std::array<double, 3>& hi, std::size_t& clusters)
 {
-  Localization_result r;
-  r.location_of_point.assign(p.size(), Localization_result::no_location);
-  if(p.empty())
-    return r;
-  std::array<double, 3> lo, hi;
-  double voxel = o.spacing;
-  if(o.method == Localization_method::MEAN_SHIFT)
-    voxel = o.shift_radius / 2;
-  else if(o.method == Localization_method::HEIGHT_IMAGE || o.method == Localization_method::NORMALIZED_CUT)
-    voxel = o.cell;
-  checked_bounds(p, (std::min)(voxel, floating_radius), "locate_objects", lo, hi);
-  std::size_t clusters = 0;
-  std::vector<std::uint32_t> cluster;
   switch(o.method) {
   case Localization_method::MEAN_SHIFT:
-    cluster = mean_shift_clusters(p, o.shift_radius, lo, clusters);
-    break;
+    return mean_shift_clusters(p, o.shift_radius, lo, clusters);
   case Localization_method::HEIGHT_IMAGE:
-    cluster = height_image_clusters(p, o.cell, o.sigma, o.image_threshold, lo, hi, clusters);
-    break;
+    return height_image_clusters(p, o.cell, o.sigma, o.image_threshold, lo, hi, clusters);
   case Localization_method::NORMALIZED_CUT:
-    cluster = normalized_cut_clusters(p, o.cell, o.cut_threshold, lo, o.threads, clusters);
-    break;
+    return normalized_cut_clusters(p, o.cell, o.cut_threshold, lo, o.threads, clusters);
   default:
-    cluster = voxel_components(p, std::vector<char>(p.size(), 1), o.spacing, lo, clusters);
+    return voxel_components(p, std::vector<char>(p.size(), 1), o.spacing, lo, clusters);
   }
-  r.number_of_clusters = clusters;
+}
+
+// The locations of the clusters that are large enough, not too tall and not floating, each with
+// its cluster, by increasing cluster.
+inline std::vector<std::pair<Object_location, std::size_t>>
+cluster_locations(const std::vector<std::array<double, 3>>& p, const std::vector<std::uint32_t>& cluster,
+                  std::size_t clusters, const std::array<double, 3>& lo, const Localization_options& o)
+{
   // Per cluster: count, lowest and highest z; then the mean (x, y) of its foot.
   std::vector<std::size_t> count(clusters, 0), foot(clusters, 0);
   std::vector<std::array<double, 2>> z(clusters, {std::numeric_limits<double>::infinity(),
@@ -146,7 +140,7 @@ inline Localization_result locate_objects(const std::vector<std::array<double, 3
     auto it = lowest.emplace(voxel_key(q[0], q[1], lo[2], floating_radius, lo), q[2]).first;
     it->second = (std::min)(it->second, q[2]);
   }
-  std::vector<std::pair<Object_location, std::size_t>> kept; // with its cluster
+  std::vector<std::pair<Object_location, std::size_t>> kept;
   for(std::size_t c = 0; c < clusters; ++c) {
     const double height = z[c][1] - z[c][0];
     if(count[c] < o.minimum || height > o.tallest)
@@ -167,6 +161,26 @@ inline Localization_result locate_objects(const std::vector<std::array<double, 3
     l.height = height;
     kept.emplace_back(l, c);
   }
+  return kept;
+}
+
+inline Localization_result locate_objects(const std::vector<std::array<double, 3>>& p, const Localization_options& o)
+{
+  Localization_result r;
+  r.location_of_point.assign(p.size(), Localization_result::no_location);
+  if(p.empty())
+    return r;
+  std::array<double, 3> lo, hi;
+  double voxel = o.spacing;
+  if(o.method == Localization_method::MEAN_SHIFT)
+    voxel = o.shift_radius / 2;
+  else if(o.method == Localization_method::HEIGHT_IMAGE || o.method == Localization_method::NORMALIZED_CUT)
+    voxel = o.cell;
+  checked_bounds(p, (std::min)(voxel, floating_radius), "locate_objects", lo, hi);
+  std::size_t clusters = 0;
+  const std::vector<std::uint32_t> cluster = clusters_by_method(p, o, lo, hi, clusters);
+  r.number_of_clusters = clusters;
+  std::vector<std::pair<Object_location, std::size_t>> kept = cluster_locations(p, cluster, clusters, lo, o);
   std::sort(kept.begin(), kept.end(), [](const auto& a, const auto& b) {
     return std::tie(a.first.position[0], a.first.position[1]) < std::tie(b.first.position[0], b.first.position[1]);
   });
@@ -188,7 +202,7 @@ inline Localization_result locate_objects(const std::vector<std::array<double, 3
 \ingroup PkgPointSetObjectRecognitionRef
 
 Locates potential objects among the foreground points of a scan (what `remove_background()`
-keeps), in the manner of \cgalCite{Golovinskiy2010} (section 4.3.3). The points are grouped into
+keeps), in the manner of \cgalCite{Golovinskiy2010} (section 4.3.2). The points are grouped into
 clusters by the `localization_method`:
 - `Localization_method::CONNECTED_COMPONENTS`: touching voxels of side `component_spacing`
   (by a face, an edge or a corner). Objects that touch each other give one cluster;

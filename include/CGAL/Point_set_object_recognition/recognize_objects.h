@@ -86,19 +86,19 @@ struct Tile_grid
   std::size_t tile(double x, double y) const { return std::size_t(row(y) * nx + column(x)); }
 };
 
-// `point(i)` gives the coordinates of point i < n, read as the tiles need them (no copy of the
-// whole cloud).
-template <typename PointAt>
-Object_recognition_result recognize_objects(std::size_t n, const PointAt& point, const Recognition_options& o)
+// What one tile found: its locations and their objects (point indices in the input).
+struct Tile_output
 {
-  const auto start = std::chrono::steady_clock::now();
-  const auto since = [](std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  };
-  if(n == 0)
-    throw Bad_input("recognize_objects: the point cloud is empty");
-  if(n >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
-    throw Bad_input("recognize_objects: too many points (at most 2^32 - 2)");
+  Scene_tile tile;
+  std::vector<Object_location> locations;
+  std::vector<Object_segmentation> objects;
+};
+
+// The tiles of the scene of the n points `point(i)`; Bad_input for a coordinate that is not finite
+// or too many tiles.
+template <typename PointAt>
+Tile_grid scene_tiles(std::size_t n, const PointAt& point, const Recognition_options& o)
+{
   std::array<double, 2> lo{{point(0)[0], point(0)[1]}}, hi = lo;
   for(std::size_t i = 0; i < n; ++i) {
     const P3 q = point(i);
@@ -119,122 +119,130 @@ Object_recognition_result recognize_objects(std::size_t n, const PointAt& point,
   if(!(nx * ny <= 1e8))
     throw Bad_input("recognize_objects: more than 10^8 tiles (use a larger tile_size)");
   grid.nx = long(nx), grid.ny = long(ny);
+  return grid;
+}
 
-  // The points by tile (a counting sort; within a tile, in input order).
+// The points by tile (a counting sort; within a tile, in input order): those of tile t are
+// order[first[t]] to order[first[t + 1] - 1].
+template <typename PointAt>
+void sort_by_tile(std::size_t n, const PointAt& point, const Tile_grid& grid, std::vector<std::uint32_t>& first,
+                  std::vector<std::uint32_t>& order)
+{
   const std::size_t tiles = std::size_t(grid.nx * grid.ny);
-  std::vector<std::uint32_t> first(tiles + 1, 0), order(n);
-  {
-    std::vector<std::uint32_t> tile_of(n);
-    for(std::size_t i = 0; i < n; ++i) {
-      const P3 q = point(i);
-      ++first[(tile_of[i] = std::uint32_t(grid.tile(q[0], q[1]))) + 1];
-    }
-    for(std::size_t t = 0; t < tiles; ++t)
-      first[t + 1] += first[t];
-    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-    for(std::size_t i = 0; i < n; ++i)
-      order[fill[tile_of[i]]++] = std::uint32_t(i);
+  first.assign(tiles + 1, 0);
+  order.assign(n, 0);
+  std::vector<std::uint32_t> tile_of(n);
+  for(std::size_t i = 0; i < n; ++i) {
+    const P3 q = point(i);
+    ++first[(tile_of[i] = std::uint32_t(grid.tile(q[0], q[1]))) + 1];
   }
-
-  Object_recognition_result r;
-  r.object_of_point.assign(n, Object_recognition_result::no_object);
-  r.kind.assign(n, Point_kind::GROUND);
-  // The tiles whose points can lie within the margin (bounded by the grid: any margin is valid).
-  const long reach = long((std::min)(std::floor(o.margin / o.tile) + 1, double((std::max)(grid.nx, grid.ny))));
-  // The tile that keeps a location: the one holding it or, when that one holds no point (a
-  // location over a hole of the scan), the first of its neighbours that holds some.
-  const auto owner = [&](const P3& l) {
-    const long cx = grid.column(l[0]), cy = grid.row(l[1]);
-    const std::size_t u = std::size_t(cy * grid.nx + cx);
-    if(first[u] != first[u + 1])
-      return u;
-    for(long j = (std::max)(0L, cy - 1); j <= (std::min)(grid.ny - 1, cy + 1); ++j)
-      for(long i = (std::max)(0L, cx - 1); i <= (std::min)(grid.nx - 1, cx + 1); ++i) {
-        const std::size_t v = std::size_t(j * grid.nx + i);
-        if(first[v] != first[v + 1])
-          return v;
-      }
-    return tiles; // none
-  };
-  // The tiles run in parallel (each with its own buffers, freed when it ends, and its stages with
-  // `number_of_threads`); their locations and objects are merged in the order of the tiles, so
-  // that the result does not depend on the number of threads.
-  struct Tile_output
-  {
-    Scene_tile tile;
-    std::vector<Object_location> locations;
-    std::vector<Object_segmentation> objects; // point indices in the input
-  };
-  std::vector<std::size_t> busy; // the tiles that hold points
   for(std::size_t t = 0; t < tiles; ++t)
-    if(first[t] != first[t + 1])
-      busy.push_back(t);
-  std::vector<Tile_output> outputs(busy.size());
-  CGAL::Shape_analysis::internal::Parallel_workspaces<char> parallel(o.threads);
-  parallel.for_each(0, busy.size(), [&](std::size_t b, char&) {
-    const std::size_t t = busy[b];
-    const long tx = long(t % std::size_t(grid.nx)), ty = long(t / std::size_t(grid.nx));
-    const auto tile_start = std::chrono::steady_clock::now();
-    Tile_output& out = outputs[b];
-    Scene_tile& tile = out.tile;
-    tile.min = {{grid.lo[0] + double(tx) * o.tile, grid.lo[1] + double(ty) * o.tile}};
-    tile.max = {{tile.min[0] + o.tile, tile.min[1] + o.tile}};
-    // Its points and those of its margin, in input order.
-    std::vector<std::uint32_t> local;
-    for(long j = (std::max)(0L, ty - reach); j <= (std::min)(grid.ny - 1, ty + reach); ++j)
-      for(long i = (std::max)(0L, tx - reach); i <= (std::min)(grid.nx - 1, tx + reach); ++i) {
-        const std::size_t u = std::size_t(j * grid.nx + i);
-        for(std::uint32_t k = first[u]; k < first[u + 1]; ++k) {
-          if(u == t) { // its own points (whatever the rounding)
-            local.push_back(order[k]);
-            continue;
-          }
-          const P3 a = point(order[k]);
-          if(a[0] >= tile.min[0] - o.margin && a[0] <= tile.max[0] + o.margin && a[1] >= tile.min[1] - o.margin &&
-             a[1] <= tile.max[1] + o.margin)
-            local.push_back(order[k]);
-        }
-      }
-    std::sort(local.begin(), local.end());
-    std::vector<P3> q(local.size());
-    for(std::size_t k = 0; k < local.size(); ++k)
-      q[k] = point(local[k]);
-    tile.number_of_points = local.size();
+    first[t + 1] += first[t];
+  std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+  for(std::size_t i = 0; i < n; ++i)
+    order[fill[tile_of[i]]++] = std::uint32_t(i);
+}
 
-    const Background_removal_result background = internal::remove_background(q, o.background);
-    // The kinds of its own points (no other tile writes them).
-    for(std::size_t k = 0; k < local.size(); ++k)
-      if(grid.tile(q[k][0], q[k][1]) == t)
-        r.kind[local[k]] = background.kind[k];
-    std::vector<P3> foreground(background.foreground.size());
-    for(std::size_t k = 0; k < foreground.size(); ++k)
-      foreground[k] = q[background.foreground[k]];
-    const Localization_result found = internal::locate_objects(foreground, o.localization);
-    std::vector<P3> own;
-    for(const Object_location& l : found.locations)
-      if(owner(l.position) == t) {
-        out.locations.push_back(l);
-        own.push_back(l.position);
-      }
-    tile.number_of_locations = own.size();
-    if(!own.empty()) {
-      const std::vector<std::size_t> above = points_above_ground(background);
-      std::vector<P3> kept(above.size());
-      for(std::size_t k = 0; k < above.size(); ++k)
-        kept[k] = q[above[k]];
-      Segmentation_result s = internal::segment_objects(kept, own, o.segmentation);
-      for(Object_segmentation& object : s.objects) {
-        for(std::size_t& i : object.points)
-          i = local[above[i]]; // increasing, as `above` and `local` are
-        if(object.seed != Object_segmentation::no_point)
-          object.seed = local[above[object.seed]];
-      }
-      out.objects = std::move(s.objects);
+// The tile that keeps a location: the one holding it or, when that one holds no point (a
+// location over a hole of the scan), the first of its neighbours that holds some; the number of
+// tiles for none.
+inline std::size_t location_owner(const Tile_grid& grid, const std::vector<std::uint32_t>& first, const P3& l)
+{
+  const long cx = grid.column(l[0]), cy = grid.row(l[1]);
+  const std::size_t u = std::size_t(cy * grid.nx + cx);
+  if(first[u] != first[u + 1])
+    return u;
+  for(long j = (std::max)(0L, cy - 1); j <= (std::min)(grid.ny - 1, cy + 1); ++j)
+    for(long i = (std::max)(0L, cx - 1); i <= (std::min)(grid.nx - 1, cx + 1); ++i) {
+      const std::size_t v = std::size_t(j * grid.nx + i);
+      if(first[v] != first[v + 1])
+        return v;
     }
-    tile.seconds = since(tile_start);
-  });
-  // Merged in the order of the tiles: a point segmented by several objects goes to the one whose
-  // location is horizontally nearest (the first on a tie).
+  return first.size() - 1; // none
+}
+
+// The points of tile t and those of its margin (in the tiles up to `reach` away), in input order.
+template <typename PointAt>
+std::vector<std::uint32_t> tile_points(std::size_t t, const Scene_tile& tile, long reach, const Tile_grid& grid,
+                                       const std::vector<std::uint32_t>& first, const std::vector<std::uint32_t>& order,
+                                       const PointAt& point, double margin)
+{
+  const long tx = long(t % std::size_t(grid.nx)), ty = long(t / std::size_t(grid.nx));
+  std::vector<std::uint32_t> local;
+  for(long j = (std::max)(0L, ty - reach); j <= (std::min)(grid.ny - 1, ty + reach); ++j)
+    for(long i = (std::max)(0L, tx - reach); i <= (std::min)(grid.nx - 1, tx + reach); ++i) {
+      const std::size_t u = std::size_t(j * grid.nx + i);
+      for(std::uint32_t k = first[u]; k < first[u + 1]; ++k) {
+        if(u == t) { // its own points (whatever the rounding)
+          local.push_back(order[k]);
+          continue;
+        }
+        const P3 a = point(order[k]);
+        if(a[0] >= tile.min[0] - margin && a[0] <= tile.max[0] + margin && a[1] >= tile.min[1] - margin &&
+           a[1] <= tile.max[1] + margin)
+          local.push_back(order[k]);
+      }
+    }
+  std::sort(local.begin(), local.end());
+  return local;
+}
+
+// Tile t on its own: the background removal of its points and those of its margin (the kinds of
+// its own points into `kind`), the locations that fall in it, their objects.
+template <typename PointAt>
+void process_tile(std::size_t t, long reach, const Tile_grid& grid, const std::vector<std::uint32_t>& first,
+                  const std::vector<std::uint32_t>& order, const PointAt& point, const Recognition_options& o,
+                  std::vector<Point_kind>& kind, Tile_output& out)
+{
+  const long tx = long(t % std::size_t(grid.nx)), ty = long(t / std::size_t(grid.nx));
+  const auto tile_start = std::chrono::steady_clock::now();
+  Scene_tile& tile = out.tile;
+  tile.min = {{grid.lo[0] + double(tx) * o.tile, grid.lo[1] + double(ty) * o.tile}};
+  tile.max = {{tile.min[0] + o.tile, tile.min[1] + o.tile}};
+  const std::vector<std::uint32_t> local = tile_points(t, tile, reach, grid, first, order, point, o.margin);
+  std::vector<P3> q(local.size());
+  for(std::size_t k = 0; k < local.size(); ++k)
+    q[k] = point(local[k]);
+  tile.number_of_points = local.size();
+
+  const Background_removal_result background = internal::remove_background(q, o.background);
+  // The kinds of its own points (no other tile writes them).
+  for(std::size_t k = 0; k < local.size(); ++k)
+    if(grid.tile(q[k][0], q[k][1]) == t)
+      kind[local[k]] = background.kind[k];
+  std::vector<P3> foreground(background.foreground.size());
+  for(std::size_t k = 0; k < foreground.size(); ++k)
+    foreground[k] = q[background.foreground[k]];
+  const Localization_result found = internal::locate_objects(foreground, o.localization);
+  std::vector<P3> own;
+  for(const Object_location& l : found.locations)
+    if(location_owner(grid, first, l.position) == t) {
+      out.locations.push_back(l);
+      own.push_back(l.position);
+    }
+  tile.number_of_locations = own.size();
+  if(!own.empty()) {
+    const std::vector<std::size_t> above = points_above_ground(background);
+    std::vector<P3> kept(above.size());
+    for(std::size_t k = 0; k < above.size(); ++k)
+      kept[k] = q[above[k]];
+    Segmentation_result s = internal::segment_objects(kept, own, o.segmentation);
+    for(Object_segmentation& object : s.objects) {
+      for(std::size_t& i : object.points)
+        i = local[above[i]]; // increasing, as `above` and `local` are
+      if(object.seed != Object_segmentation::no_point)
+        object.seed = local[above[object.seed]];
+    }
+    out.objects = std::move(s.objects);
+  }
+  tile.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tile_start).count();
+}
+
+// The outputs of the tiles merged in the order of the tiles: a point segmented by several
+// objects goes to the one whose location is horizontally nearest (the first on a tie).
+template <typename PointAt>
+void merge_tiles(std::vector<Tile_output>& outputs, const PointAt& point, Object_recognition_result& r)
+{
   for(Tile_output& out : outputs) {
     r.largest_tile = (std::max)(r.largest_tile, out.tile.number_of_points);
     // One object per location (segment_objects()): object k is that of location k.
@@ -267,7 +275,42 @@ Object_recognition_result recognize_objects(std::size_t n, const PointAt& point,
                                 }),
                  points.end());
   }
-  r.seconds = since(start);
+}
+
+// `point(i)` gives the coordinates of point i < n, read as the tiles need them (no copy of the
+// whole cloud).
+template <typename PointAt>
+Object_recognition_result recognize_objects(std::size_t n, const PointAt& point, const Recognition_options& o)
+{
+  const auto start = std::chrono::steady_clock::now();
+  if(n == 0)
+    throw Bad_input("recognize_objects: the point cloud is empty");
+  if(n >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
+    throw Bad_input("recognize_objects: too many points (at most 2^32 - 2)");
+  const Tile_grid grid = scene_tiles(n, point, o);
+  const std::size_t tiles = std::size_t(grid.nx * grid.ny);
+  std::vector<std::uint32_t> first, order;
+  sort_by_tile(n, point, grid, first, order);
+
+  Object_recognition_result r;
+  r.object_of_point.assign(n, Object_recognition_result::no_object);
+  r.kind.assign(n, Point_kind::GROUND);
+  // The tiles whose points can lie within the margin (bounded by the grid: any margin is valid).
+  const long reach = long((std::min)(std::floor(o.margin / o.tile) + 1, double((std::max)(grid.nx, grid.ny))));
+  // The tiles run in parallel (each with its own buffers, freed when it ends, and its stages with
+  // `number_of_threads`); their locations and objects are merged in the order of the tiles, so
+  // that the result does not depend on the number of threads.
+  std::vector<std::size_t> busy; // the tiles that hold points
+  for(std::size_t t = 0; t < tiles; ++t)
+    if(first[t] != first[t + 1])
+      busy.push_back(t);
+  std::vector<Tile_output> outputs(busy.size());
+  CGAL::Shape_analysis::internal::Parallel_workspaces<char> parallel(o.threads);
+  parallel.for_each(0, busy.size(), [&](std::size_t b, char&) {
+    process_tile(busy[b], reach, grid, first, order, point, o, r.kind, outputs[b]);
+  });
+  merge_tiles(outputs, point, r);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
 

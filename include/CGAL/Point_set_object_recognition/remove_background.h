@@ -13,6 +13,7 @@
 
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/parameters.h>
+#include <CGAL/Point_set_object_recognition/internal/Background_removal.h>
 #include <CGAL/Point_set_object_recognition/internal/Voxel_grid.h>
 
 #include <algorithm>
@@ -90,276 +91,197 @@ struct Background_removal_result
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-struct Background_options
+// The points by the cells of the ground grid `g`: those of cell c are order[start[c]] to
+// order[start[c + 1] - 1], increasing.
+inline void sort_by_cell(const std::vector<std::array<double, 3>>& p, const Ground_grid& g, double cell,
+                         std::vector<std::size_t>& start, std::vector<std::size_t>& order)
 {
-  double cell = 5, threshold = 0.2, isolation = 0.5, spacing = 0.5, extent = 12;
-  std::size_t neighbors = 3;
-};
-
-// Least-squares plane z = a x + b y + c through the points `idx` (coordinates relative to
-// (cx, cy)); false when they do not determine one, or do not spread over the cell in both x and
-// y (standard deviation under `spread`: the foot of a wall, a lone object).
-inline bool fit_plane(const std::vector<std::array<double, 3>>& p, const std::vector<std::size_t>& idx,
-                      double cx, double cy, double spread, std::array<double, 3>& plane)
-{
-  if(idx.size() < 3)
-    return false;
-  double sxx = 0, sxy = 0, syy = 0, sx = 0, sy = 0, sz = 0, sxz = 0, syz = 0;
-  const double n = double(idx.size());
-  for(std::size_t i : idx) {
-    const double x = p[i][0] - cx, y = p[i][1] - cy, z = p[i][2];
-    sxx += x * x, sxy += x * y, syy += y * y, sx += x, sy += y, sz += z, sxz += x * z, syz += y * z;
-  }
-  // Centred normal equations.
-  const double mx = sx / n, my = sy / n, mz = sz / n;
-  const double cxx = sxx / n - mx * mx, cxy = sxy / n - mx * my, cyy = syy / n - my * my;
-  const double cxz = sxz / n - mx * mz, cyz = syz / n - my * mz;
-  if(cxx < spread * spread || cyy < spread * spread)
-    return false;
-  const double det = cxx * cyy - cxy * cxy;
-  double a = 0, b = 0;
-  if(det > 1e-6 * (cxx + cyy) * (cxx + cyy) && det > 0) {
-    a = (cxz * cyy - cyz * cxy) / det;
-    b = (cyz * cxx - cxz * cxy) / det;
-  }
-  // A ground steeper than 45 degrees is a wall: keep it level.
-  if(!(std::abs(a) < 1 && std::abs(b) < 1))
-    a = b = 0;
-  plane = {a, b, mz - a * mx - b * my - a * cx - b * cy};
-  return std::isfinite(plane[2]);
-}
-
-// Per connected component of the selected points: its horizontal box and its lowest and highest
-// heights above the ground.
-struct Component_box
-{
-  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, low = x0;
-  double x1 = -std::numeric_limits<double>::infinity(), y1 = x1, high = x1;
-  double width() const { return std::hypot(x1 - x0, y1 - y0); } // the horizontal diagonal
-};
-
-inline std::vector<Component_box> component_boxes(const std::vector<std::array<double, 3>>& p,
-                                                  const std::vector<double>& height,
-                                                  const std::vector<char>& selected,
-                                                  const std::vector<std::uint32_t>& component,
-                                                  std::size_t components)
-{
-  std::vector<Component_box> box(components);
-  for(std::size_t i = 0; i < p.size(); ++i)
-    if(selected[i]) {
-      Component_box& b = box[component[i]];
-      b.x0 = (std::min)(b.x0, p[i][0]), b.y0 = (std::min)(b.y0, p[i][1]), b.low = (std::min)(b.low, height[i]);
-      b.x1 = (std::max)(b.x1, p[i][0]), b.y1 = (std::max)(b.y1, p[i][1]), b.high = (std::max)(b.high, height[i]);
-    }
-  return box;
-}
-
-// The points of large components (`large[i]` set) that do not belong to a wall: in a large
-// component, the columns (squares of side component_spacing / 2) whose points span more than
-// 2 m in height above the ground are walls. The other points of large components are grouped
-// again into connected components (voxels of side component_spacing); `large[i]` is cleared for
-// the points of the components no wider than `maximum_component_extent` and no taller than 2 m
-// that start less than 0.5 m above the ground, so that a newspaper box against a facade is kept,
-// and the remains of a facade (window sills, fragments of walls seen through gaps) are not.
-inline void peel_walls(const std::vector<std::array<double, 3>>& p, const std::vector<double>& height,
-                       const Background_options& o, const std::array<double, 3>& lo, std::vector<char>& large)
-{
-  const std::size_t n = p.size();
-  const double side = o.spacing / 2, wall_height = 2.0, grounded = 0.5;
-  std::unordered_map<std::uint64_t, std::array<double, 2>> column; // lowest, highest
-  const auto key2 = [&](std::size_t i) { return voxel_key(p[i][0], p[i][1], lo[2], side, lo); };
-  for(std::size_t i = 0; i < n; ++i)
-    if(large[i]) {
-      auto& c = column.emplace(key2(i), std::array<double, 2>{{height[i], height[i]}}).first->second;
-      c[0] = (std::min)(c[0], height[i]);
-      c[1] = (std::max)(c[1], height[i]);
-    }
-  std::vector<char> rest(n, 0);
-  bool any = false;
-  for(std::size_t i = 0; i < n; ++i)
-    if(large[i]) {
-      const auto& c = column[key2(i)];
-      rest[i] = c[1] - c[0] > wall_height ? 0 : 1;
-      any = any || rest[i];
-    }
-  if(!any)
-    return;
-  std::size_t components = 0;
-  const std::vector<std::uint32_t> component = voxel_components(p, rest, o.spacing, lo, components);
-  const std::vector<Component_box> box = component_boxes(p, height, rest, component, components);
-  for(std::size_t i = 0; i < n; ++i)
-    if(rest[i]) {
-      const Component_box& b = box[component[i]];
-      if(!(b.width() > o.extent) && b.low < grounded && b.high - b.low <= wall_height)
-        large[i] = 0;
-    }
-}
-
-inline Background_removal_result remove_background(const std::vector<std::array<double, 3>>& p,
-                                                   const Background_options& o)
-{
-  Background_removal_result r;
-  const std::size_t n = p.size();
-  r.kind.assign(n, Point_kind::FOREGROUND);
-  r.height_above_ground.assign(n, 0.0);
-  if(n == 0)
-    return r;
-  std::array<double, 3> lo, hi;
-  checked_bounds(p, (std::min)(o.cell, (std::min)(o.isolation, o.spacing)), "remove_background", lo, hi);
-
-  // 1. The ground: per cell, a plane started at the cell's low points and refitted to the
-  //    points near it, with a shrinking band.
-  Ground_grid& g = r.ground;
-  g.cell_size = o.cell;
-  g.x0 = lo[0];
-  g.y0 = lo[1];
-  g.nx = std::size_t((hi[0] - lo[0]) / o.cell) + 1;
-  g.ny = std::size_t((hi[1] - lo[1]) / o.cell) + 1;
-  const std::size_t cells = g.nx * g.ny;
-  std::vector<std::size_t> start(cells + 1, 0), order(n);
+  const std::size_t n = p.size(), cells = g.nx * g.ny;
+  start.assign(cells + 1, 0);
+  order.assign(n, 0);
   const auto cell_of = [&](std::size_t i) {
-    const std::size_t ci = (std::min)(std::size_t((p[i][0] - g.x0) / o.cell), g.nx - 1);
-    const std::size_t cj = (std::min)(std::size_t((p[i][1] - g.y0) / o.cell), g.ny - 1);
+    const std::size_t ci = (std::min)(std::size_t((p[i][0] - g.x0) / cell), g.nx - 1);
+    const std::size_t cj = (std::min)(std::size_t((p[i][1] - g.y0) / cell), g.ny - 1);
     return ci + g.nx * cj;
   };
   for(std::size_t i = 0; i < n; ++i)
     ++start[cell_of(i) + 1];
   for(std::size_t c = 0; c < cells; ++c)
     start[c + 1] += start[c];
-  {
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for(std::size_t i = 0; i < n; ++i)
-      order[fill[cell_of(i)]++] = i;
-  }
-  g.planes.assign(cells, {0, 0, 0});
-  std::vector<char> valid(cells, 0);
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for(std::size_t i = 0; i < n; ++i)
+    order[fill[cell_of(i)]++] = i;
+}
+
+// The buffers of fit_cell_ground, shared by the cells.
+struct Cell_ground_buffers
+{
   std::vector<double> zs;
-  std::vector<std::size_t> near, lowest;
+  std::vector<std::size_t> near, lowest, column_point;
+};
+
+// The ground plane of cell c (its points `points`, `count` of them), started at its low points
+// and refitted to the points near it, with a shrinking band, in g.planes[c]; valid[c] when it
+// was fitted. A cell of fewer than three columns keeps the level plane 0.
+inline void fit_cell_ground(const std::vector<std::array<double, 3>>& p, const Background_options& o, std::size_t c,
+                            const std::size_t* points, std::size_t count, Ground_grid& g, std::vector<char>& valid,
+                            Cell_ground_buffers& buffers)
+{
   // The fits see only the lowest point of each column of side cell / 16: a wall or an object
   // standing on the ground then weighs no more than the ground beside it (their bottom rows
   // would otherwise lift the plane towards them).
   constexpr std::size_t columns = 16;
-  std::vector<std::size_t> column_point(columns * columns);
   const std::size_t none = std::size_t(-1);
-  for(std::size_t c = 0; c < cells; ++c) {
-    const std::size_t b = start[c], e = start[c + 1];
-    if(e - b < 3)
-      continue;
-    const double xa = g.x0 + double(c % g.nx) * o.cell, ya = g.y0 + double(c / g.nx) * o.cell;
-    std::fill(column_point.begin(), column_point.end(), none);
-    for(std::size_t k = b; k < e; ++k) {
-      const std::size_t i = order[k];
-      const auto sub = [&](double t) {
-        return (std::min)(columns - 1, std::size_t((std::max)(0.0, t) * double(columns) / o.cell));
-      };
-      std::size_t& best = column_point[sub(p[i][0] - xa) + columns * sub(p[i][1] - ya)];
-      if(best == none || p[i][2] < p[best][2] || (p[i][2] == p[best][2] && i < best))
-        best = i;
-    }
-    lowest.clear();
-    for(std::size_t i : column_point)
-      if(i != none)
-        lowest.push_back(i);
-    std::sort(lowest.begin(), lowest.end());
-    if(lowest.size() < 3)
-      continue;
-    zs.clear();
-    for(std::size_t i : lowest)
-      zs.push_back(p[i][2]);
-    const std::size_t q = (zs.size() - 1) / 20; // the 5th percentile: below it, noise
-    std::nth_element(zs.begin(), zs.begin() + long(q), zs.end());
-    std::array<double, 3> plane{{0, 0, zs[q]}};
-    bool fitted = false;
-    const double cx = xa + 0.5 * o.cell, cy = ya + 0.5 * o.cell;
-    for(double band : {1.0, 0.5, 0.3, 0.2}) {
-      near.clear();
-      for(std::size_t i : lowest) {
-        const double d = p[i][2] - (plane[0] * p[i][0] + plane[1] * p[i][1] + plane[2]);
-        if(d > -band && d < band)
-          near.push_back(i);
-      }
-      std::array<double, 3> next;
-      if(!fit_plane(p, near, cx, cy, o.cell / 8, next))
-        break;
-      plane = next;
-      fitted = true;
-    }
-    g.planes[c] = plane;
-    valid[c] = fitted ? 1 : 0;
+  std::vector<std::size_t>& column_point = buffers.column_point;
+  std::vector<std::size_t>& lowest = buffers.lowest;
+  const double xa = g.x0 + double(c % g.nx) * o.cell, ya = g.y0 + double(c / g.nx) * o.cell;
+  column_point.assign(columns * columns, none);
+  for(std::size_t k = 0; k < count; ++k) {
+    const std::size_t i = points[k];
+    const auto sub = [&](double t) {
+      return (std::min)(columns - 1, std::size_t((std::max)(0.0, t) * double(columns) / o.cell));
+    };
+    std::size_t& best = column_point[sub(p[i][0] - xa) + columns * sub(p[i][1] - ya)];
+    if(best == none || p[i][2] < p[best][2] || (p[i][2] == p[best][2] && i < best))
+      best = i;
   }
-  // A cell whose ground stands well above all its neighbours' (a roof, a car seen alone) takes
-  // theirs; empty cells take the ones of the nearest filled cells.
-  const auto centre_height = [&](std::size_t c) {
-    const auto& pl = g.planes[c];
-    const double cx = g.x0 + (double(c % g.nx) + 0.5) * o.cell, cy = g.y0 + (double(c / g.nx) + 0.5) * o.cell;
-    return pl[0] * cx + pl[1] * cy + pl[2];
-  };
-  // Compared with the lowest fitted ground within 20 m: a rise of more than 1 m plus 30% of
-  // the distance is not ground.
+  lowest.clear();
+  for(std::size_t i : column_point)
+    if(i != none)
+      lowest.push_back(i);
+  std::sort(lowest.begin(), lowest.end());
+  if(lowest.size() < 3)
+    return;
+  std::vector<double>& zs = buffers.zs;
+  zs.clear();
+  for(std::size_t i : lowest)
+    zs.push_back(p[i][2]);
+  const std::size_t q = (zs.size() - 1) / 20; // the 5th percentile: below it, noise
+  std::nth_element(zs.begin(), zs.begin() + long(q), zs.end());
+  std::array<double, 3> plane{{0, 0, zs[q]}};
+  bool fitted = false;
+  const double cx = xa + 0.5 * o.cell, cy = ya + 0.5 * o.cell;
+  for(double band : {1.0, 0.5, 0.3, 0.2}) {
+    buffers.near.clear();
+    for(std::size_t i : lowest) {
+      const double d = p[i][2] - (plane[0] * p[i][0] + plane[1] * p[i][1] + plane[2]);
+      if(d > -band && d < band)
+        buffers.near.push_back(i);
+    }
+    std::array<double, 3> next;
+    if(!fit_plane(p, buffers.near, cx, cy, o.cell / 8, next))
+      break;
+    plane = next;
+    fitted = true;
+  }
+  g.planes[c] = plane;
+  valid[c] = fitted ? 1 : 0;
+}
+
+// The height of the ground plane of cell c at the cell's centre.
+inline double centre_height(const Ground_grid& g, double cell, std::size_t c)
+{
+  const auto& pl = g.planes[c];
+  const double cx = g.x0 + (double(c % g.nx) + 0.5) * cell, cy = g.y0 + (double(c / g.nx) + 0.5) * cell;
+  return pl[0] * cx + pl[1] * cy + pl[2];
+}
+
+// The fitted cells (`valid`) whose ground does not stand well above all its neighbours' (a roof,
+// a car seen alone): compared with the lowest fitted ground within 20 m, a rise of more than
+// 1 m plus 30% of the distance is not ground.
+inline std::vector<char> grounded_cells(const Ground_grid& g, double cell, const std::vector<char>& valid)
+{
   std::vector<char> keep = valid;
-  const long reach = (std::max)(1L, long(std::ceil(20.0 / o.cell)));
-  for(std::size_t c = 0; c < cells; ++c) {
+  const long reach = (std::max)(1L, long(std::ceil(20.0 / cell)));
+  for(std::size_t c = 0; c < valid.size(); ++c) {
     if(!valid[c])
       continue;
     const long ci = long(c % g.nx), cj = long(c / g.nx);
-    const double h = centre_height(c);
+    const double h = centre_height(g, cell, c);
     for(long dj = -reach; dj <= reach && keep[c]; ++dj)
       for(long di = -reach; di <= reach; ++di) {
         const long i = ci + di, j = cj + dj;
         if((di == 0 && dj == 0) || i < 0 || j < 0 || i >= long(g.nx) || j >= long(g.ny))
           continue;
         const std::size_t d = std::size_t(i) + g.nx * std::size_t(j);
-        if(valid[d] && h > centre_height(d) + 1.0 + 0.3 * o.cell * std::hypot(double(di), double(dj))) {
+        if(valid[d] && h > centre_height(g, cell, d) + 1.0 + 0.3 * cell * std::hypot(double(di), double(dj))) {
           keep[c] = 0;
           break;
         }
       }
   }
-  {
-    // Breadth-first filling from the kept cells (deterministic order).
-    std::vector<std::size_t> frontier, next;
-    for(std::size_t c = 0; c < cells; ++c)
-      if(keep[c])
-        frontier.push_back(c);
-    if(frontier.empty()) {
-      for(std::size_t c = 0; c < cells; ++c)
-        if(valid[c]) {
-          keep[c] = 1;
-          frontier.push_back(c);
-        }
-    }
-    while(!frontier.empty()) {
-      next.clear();
-      for(std::size_t c : frontier) {
-        const long ci = long(c % g.nx), cj = long(c / g.nx);
-        for(const auto& d4 : {std::array<long, 2>{{1, 0}}, std::array<long, 2>{{-1, 0}},
-                              std::array<long, 2>{{0, 1}}, std::array<long, 2>{{0, -1}}}) {
-          const long i = ci + d4[0], j = cj + d4[1];
-          if(i < 0 || j < 0 || i >= long(g.nx) || j >= long(g.ny))
-            continue;
-          const std::size_t d = std::size_t(i) + g.nx * std::size_t(j);
-          if(keep[d])
-            continue;
-          keep[d] = 1;
-          // The neighbour's plane, level, at its height at this cell's centre.
-          const auto& pl = g.planes[c];
-          const double cx = g.x0 + (double(i) + 0.5) * o.cell, cy = g.y0 + (double(j) + 0.5) * o.cell;
-          g.planes[d] = {0, 0, pl[0] * cx + pl[1] * cy + pl[2]};
-          next.push_back(d);
-        }
-      }
-      frontier.swap(next);
-    }
-  }
-  for(std::size_t i = 0; i < n; ++i) {
-    r.height_above_ground[i] = p[i][2] - g.height(p[i][0], p[i][1]);
-    if(r.height_above_ground[i] < o.threshold) {
-      r.kind[i] = Point_kind::GROUND;
-      ++r.number_of_ground_points;
-    }
-  }
+  return keep;
+}
 
-  // 2. Isolated points: too few other non-ground points in the voxels around them.
+// The other cells take the planes of the nearest kept cells (all fitted cells when none is
+// kept), level, by a breadth-first filling (deterministic order).
+inline void fill_ground(Ground_grid& g, double cell, const std::vector<char>& valid, std::vector<char>& keep)
+{
+  std::vector<std::size_t> frontier, next;
+  for(std::size_t c = 0; c < keep.size(); ++c)
+    if(keep[c])
+      frontier.push_back(c);
+  if(frontier.empty()) {
+    for(std::size_t c = 0; c < keep.size(); ++c)
+      if(valid[c]) {
+        keep[c] = 1;
+        frontier.push_back(c);
+      }
+  }
+  while(!frontier.empty()) {
+    next.clear();
+    for(std::size_t c : frontier) {
+      const long ci = long(c % g.nx), cj = long(c / g.nx);
+      for(const auto& d4 : {std::array<long, 2>{{1, 0}}, std::array<long, 2>{{-1, 0}},
+                            std::array<long, 2>{{0, 1}}, std::array<long, 2>{{0, -1}}}) {
+        const long i = ci + d4[0], j = cj + d4[1];
+        if(i < 0 || j < 0 || i >= long(g.nx) || j >= long(g.ny))
+          continue;
+        const std::size_t d = std::size_t(i) + g.nx * std::size_t(j);
+        if(keep[d])
+          continue;
+        keep[d] = 1;
+        // The neighbour's plane, level, at its height at this cell's centre.
+        const auto& pl = g.planes[c];
+        const double cx = g.x0 + (double(i) + 0.5) * cell, cy = g.y0 + (double(j) + 0.5) * cell;
+        g.planes[d] = {0, 0, pl[0] * cx + pl[1] * cy + pl[2]};
+        next.push_back(d);
+      }
+    }
+    frontier.swap(next);
+  }
+}
+
+// 1. The ground: per cell, a plane started at the cell's low points and refitted to the points
+//    near it, with a shrinking band. A cell whose ground stands well above all its neighbours'
+//    (a roof, a car seen alone) takes theirs; empty cells take the ones of the nearest filled
+//    cells.
+inline void estimate_ground(const std::vector<std::array<double, 3>>& p, const Background_options& o,
+                            const std::array<double, 3>& lo, const std::array<double, 3>& hi, Ground_grid& g)
+{
+  g.cell_size = o.cell;
+  g.x0 = lo[0];
+  g.y0 = lo[1];
+  g.nx = std::size_t((hi[0] - lo[0]) / o.cell) + 1;
+  g.ny = std::size_t((hi[1] - lo[1]) / o.cell) + 1;
+  const std::size_t cells = g.nx * g.ny;
+  std::vector<std::size_t> start, order;
+  sort_by_cell(p, g, o.cell, start, order);
+  g.planes.assign(cells, {0, 0, 0});
+  std::vector<char> valid(cells, 0);
+  Cell_ground_buffers buffers;
+  for(std::size_t c = 0; c < cells; ++c)
+    if(start[c + 1] - start[c] >= 3)
+      fit_cell_ground(p, o, c, order.data() + start[c], start[c + 1] - start[c], g, valid, buffers);
+  std::vector<char> keep = grounded_cells(g, o.cell, valid);
+  fill_ground(g, o.cell, valid, keep);
+}
+
+// 2. Isolated points: too few other non-ground points in the voxels around them.
+inline void mark_isolated(const std::vector<std::array<double, 3>>& p, const Background_options& o,
+                          const std::array<double, 3>& lo, Background_removal_result& r)
+{
+  const std::size_t n = p.size();
   std::unordered_map<std::uint64_t, std::uint32_t> count;
   count.reserve(n - r.number_of_ground_points);
   for(std::size_t i = 0; i < n; ++i)
@@ -384,9 +306,16 @@ inline Background_removal_result remove_background(const std::vector<std::array<
       r.kind[i] = Point_kind::ISOLATED;
       ++r.number_of_isolated_points;
     }
+}
 
-  // 3. Connected components of the remaining points (occupied voxels of side
-  //    `component_spacing`, 26-connected); the ones wider than `maximum_component_extent` go.
+// 3. Connected components of the remaining points (occupied voxels of side
+//    `component_spacing`, 26-connected); the ones wider than `maximum_component_extent` go.
+// 4. Small things against walls: the points of the large components outside the walls (tall
+//    columns) are grouped again; the small groups standing on the ground stay.
+inline void mark_large_components(const std::vector<std::array<double, 3>>& p, const Background_options& o,
+                                  const std::array<double, 3>& lo, Background_removal_result& r)
+{
+  const std::size_t n = p.size();
   std::vector<char> remaining(n, 0);
   for(std::size_t i = 0; i < n; ++i)
     remaining[i] = r.kind[i] == Point_kind::FOREGROUND;
@@ -397,8 +326,6 @@ inline Background_removal_result remove_background(const std::vector<std::array<
   for(std::size_t i = 0; i < n; ++i)
     if(remaining[i])
       large[i] = box[component[i]].width() > o.extent ? 1 : 0;
-  // 4. Small things against walls: the points of the large components outside the walls (tall
-  //    columns) are grouped again; the small groups standing on the ground stay.
   peel_walls(p, r.height_above_ground, o, lo, large);
   for(std::size_t i = 0; i < n; ++i) {
     if(!remaining[i])
@@ -409,6 +336,29 @@ inline Background_removal_result remove_background(const std::vector<std::array<
     } else
       r.foreground.push_back(i);
   }
+}
+
+inline Background_removal_result remove_background(const std::vector<std::array<double, 3>>& p,
+                                                   const Background_options& o)
+{
+  Background_removal_result r;
+  const std::size_t n = p.size();
+  r.kind.assign(n, Point_kind::FOREGROUND);
+  r.height_above_ground.assign(n, 0.0);
+  if(n == 0)
+    return r;
+  std::array<double, 3> lo, hi;
+  checked_bounds(p, (std::min)(o.cell, (std::min)(o.isolation, o.spacing)), "remove_background", lo, hi);
+  estimate_ground(p, o, lo, hi, r.ground);
+  for(std::size_t i = 0; i < n; ++i) {
+    r.height_above_ground[i] = p[i][2] - r.ground.height(p[i][0], p[i][1]);
+    if(r.height_above_ground[i] < o.threshold) {
+      r.kind[i] = Point_kind::GROUND;
+      ++r.number_of_ground_points;
+    }
+  }
+  mark_isolated(p, o, lo, r);
+  mark_large_components(p, o, lo, r);
   return r;
 }
 

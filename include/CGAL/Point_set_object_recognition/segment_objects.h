@@ -12,6 +12,7 @@
 #include <CGAL/Point_set_3.h>
 #include <CGAL/property_map.h>
 
+#include <CGAL/Point_set_object_recognition/internal/Interactive_min_cut.h>
 #include <CGAL/Point_set_object_recognition/internal/Object_segmentation.h>
 #include <CGAL/Point_set_object_recognition/internal/Voxel_grid.h>
 #include <CGAL/Point_set_object_recognition/locate_objects.h>
@@ -136,31 +137,8 @@ Segmentation_options segmentation_options(const NamedParameters& np, const std::
   o.maximum_cut = SAI::parameter_value<double>(np, snp::maximum_cut_cost_tag, o.maximum_cut);
   o.spacing = SAI::parameter_value<double>(np, snp::component_spacing_tag, o.spacing);
   o.threads = SAI::parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
-  const auto positive = [](double v) { return v > 0 && std::isfinite(v); };
-  if(!positive(o.radius))
-    throw Bad_input(who + ": background_radius must be a positive number");
-  if(!std::isfinite(o.foreground_height))
-    throw Bad_input(who + ": foreground_height must be a finite number");
-  if(o.neighbors < 1 || o.neighbors > 64)
-    throw Bad_input(who + ": number_of_neighbors must be between 1 and 64");
-  if(!(o.cell >= 0) || !std::isfinite(o.cell))
-    throw Bad_input(who + ": graph_cell_size must be zero or a positive number");
-  if(!positive(o.sigma))
-    throw Bad_input(who + ": edge_sigma must be a positive number");
-  if(!(o.background_weight >= 0) || !std::isfinite(o.background_weight))
-    throw Bad_input(who + ": background_weight must be a non-negative number");
-  if(!(o.maximum_cut >= 0))
-    throw Bad_input(who + ": maximum_cut_cost must be a non-negative number");
-  if(!positive(o.spacing))
-    throw Bad_input(who + ": component_spacing must be a positive number");
+  check_segmentation_options(o, who);
   return o;
-}
-
-// The largest horizontal distance from a location that a segmentation looks at.
-inline double segmentation_reach(const Segmentation_options& o)
-{
-  const bool automatic = o.kind == Segmentation_kind::MIN_CUT_AUTO;
-  return (automatic ? o.radii.back() : o.radius) + o.ramp_width + 1.0;
 }
 
 inline P3 location_position(const Object_location& l) { return l.position; }
@@ -203,14 +181,7 @@ inline Segmentation_result segment_objects(const std::vector<P3>& p, const std::
   parallel.for_each(0, locations.size(), [&](std::size_t k, Segmentation_workspace& w) {
     out[k] = segment_one(index, locations[k], o, w);
   });
-  r.object_of_point.assign(p.size(), Segmentation_result::no_object);
-  for(std::size_t k = 0; k < out.size(); ++k)
-    for(std::size_t i : out[k].points) {
-      std::size_t& claim = r.object_of_point[i];
-      if(claim == Segmentation_result::no_object ||
-         horizontal_distance(p[i], locations[k]) < horizontal_distance(p[i], locations[claim]))
-        claim = k;
-    }
+  claim_points(p, locations, out, r.object_of_point);
   for(Segmentation_output& s : out)
     r.objects.push_back(to_public(std::move(s)));
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -224,7 +195,7 @@ inline Segmentation_result segment_objects(const std::vector<P3>& p, const std::
 \ingroup PkgPointSetObjectRecognitionRef
 
 Segments the objects at the given locations from the points around them, as
-\cgalCite{Golovinskiy2010} (section 4.3.4) and \cgalCite{GolovinskiyFunkhouser2009mincut} do.
+\cgalCite{Golovinskiy2010} (section 4.3.3) and \cgalCite{GolovinskiyFunkhouser2009mincut} do.
 Each location (metres, \f$z\f$ up) gives the base of an object: its horizontal position and
 the height of the ground under it (what `locate_objects()` returns). The hard foreground is
 described below (`foreground_height`: the thesis' 1.2 m). By `segmentation_method`:
@@ -323,9 +294,11 @@ number of threads) from one graph built for all of them.
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
   \cgalParamNBegin{background_weight}
-    \cgalParamDescription{the background penalty \f$ \beta \f$ of a point at the background radius}
+    \cgalParamDescription{the scale \f$ \beta \f$ of the data term: a point at the location is
+      rewarded by \f$ \beta \f$ for being foreground, a point at the background radius plus 1 m is
+      penalised by \f$ 10 \beta \f$}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.01`}
+    \cgalParamDefault{`0.1`}
   \cgalParamNEnd
   \cgalParamNBegin{maximum_graph_size}
     \cgalParamDescription{larger graphs are contracted to about this many nodes (0: never)}
@@ -447,23 +420,16 @@ public:
   template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
   Interactive_segmenter(const PointRange& points, const std::array<double, 3>& location,
                         const NamedParameters& np = parameters::default_values())
-    : m_points(internal::point_arrays(points, np)),
-      m_options(with_wall_nodes(internal::segmentation_options(np, "Interactive_segmenter"))),
-      m_location{{location[0], location[1], location[2]}}
-  {
-    if(m_options.kind != internal::Segmentation_kind::MIN_CUT && m_options.kind != internal::Segmentation_kind::MIN_CUT_AUTO)
-      throw Bad_input("Interactive_segmenter: the segmentation method must be a min-cut");
-    if(m_points.empty())
-      throw Bad_input("Interactive_segmenter: the point cloud is empty");
-    initialize();
-  }
+    : m_impl(internal::point_arrays(points, np), internal::segmentation_options(np, "Interactive_segmenter"),
+             internal::P3{{location[0], location[1], location[2]}})
+  {}
 
   Interactive_segmenter(const Interactive_segmenter&) = delete;
   Interactive_segmenter& operator=(const Interactive_segmenter&) = delete;
 
   /// The current segmentation.
   /// \returns the segmentation of the last solve (its `cut_cost` and `seconds` included)
-  const Object_segmentation& segmentation() const { return m_result; }
+  const Object_segmentation& segmentation() const { return m_impl.segmentation(); }
 
   /// Constrains point `i` to the foreground and solves again.
   /// \param i the index of a point
@@ -480,141 +446,12 @@ public:
 
   /// The number of points constrained so far.
   /// \returns the number of foreground and background constraints added
-  std::size_t number_of_constraints() const { return m_constrained.size(); }
+  std::size_t number_of_constraints() const { return m_impl.number_of_constraints(); }
 
 private:
-  typedef CGAL::Shape_analysis::internal::Terminal_min_cut Cut;
+  const Object_segmentation& add(std::size_t i, bool foreground) { return m_impl.add(i, foreground); }
 
-  // The segmenter's graph keeps the nodes of walls (without edges): a point on a wall can be
-  // constrained to the foreground.
-  static internal::Segmentation_options with_wall_nodes(internal::Segmentation_options o)
-  {
-    o.wall_nodes = true;
-    return o;
-  }
-
-  void initialize()
-  {
-    const std::vector<internal::P3> at{m_location};
-    m_columns.reset(new internal::Point_columns(m_points));
-    m_columns->check(at);
-    m_index.reset(new internal::Segmentation_index(*m_columns, at, internal::segmentation_reach(m_options), m_options, true));
-    internal::Segmentation_workspace w;
-    internal::Segmentation_output first = internal::segment_one(*m_index, m_location, m_options, w);
-    m_result.radius = first.radius;
-    m_result.seed = first.seed == std::size_t(-1) ? Object_segmentation::no_point : first.seed;
-    // The graph of that radius, uncontracted.
-    const double largest = m_options.kind == internal::Segmentation_kind::MIN_CUT ? m_options.radius : m_options.radii.back();
-    const std::vector<std::uint32_t> seeds = internal::object_seeds(*m_index, m_location, largest, m_options, w.candidates);
-    std::vector<double> outside;
-    internal::build_object_graph(*m_index, m_location, first.radius, seeds, m_options, w, outside, true);
-    m_nodes = w.nodes;
-    m_graph = w.graph;
-    m_outside = outside;
-    m_local.clear();
-    for(std::size_t k = 0; k < m_nodes.size(); ++k)
-      m_local.emplace(m_nodes[k], std::uint32_t(k));
-    m_cut.reset(m_nodes.size());
-    for(std::size_t e = 0; e < m_graph.edges.size(); ++e)
-      m_cut.add_edge(m_graph.edges[e][0], m_graph.edges[e][1], m_graph.weight[e]);
-    for(std::size_t k = 0; k < m_nodes.size(); ++k) {
-      m_cut.set_terminal_capacity(k, m_graph.reward[k], m_graph.penalty[k]);
-      if(m_graph.seed[k])
-        m_cut.constrain(k, Cut::SOURCE);
-    }
-    const auto start = std::chrono::steady_clock::now();
-    m_cut.solve();
-    collect(start);
-  }
-
-  const Object_segmentation& add(std::size_t i, bool foreground)
-  {
-    if(i >= m_points.size())
-      throw Bad_input("Interactive_segmenter: point index " + std::to_string(i) + " out of range");
-    const std::uint32_t v = m_index->node_of_point(i);
-    const auto it = v == internal::Segmentation_index::none ? m_local.end() : m_local.find(v);
-    if(it == m_local.end() && foreground)
-      throw Bad_input("Interactive_segmenter: point " + std::to_string(i) +
-                      " lies outside the segmenter's graph and cannot be foreground");
-    m_constrained[i] = foreground;
-    const auto start = std::chrono::steady_clock::now();
-    if(it != m_local.end()) {
-      // The side of the node: its points' constraints when they agree, free when they do not,
-      // its seed otherwise.
-      const std::uint32_t k = it->second;
-      bool any_fg = false, any_bg = false;
-      m_index->for_members(v, [&](std::uint32_t q) {
-        const auto c = m_constrained.find(q);
-        if(c != m_constrained.end())
-          (c->second ? any_fg : any_bg) = true;
-      });
-      const Cut::Side side = any_fg && any_bg ? Cut::FREE
-                             : any_fg         ? Cut::SOURCE
-                             : any_bg         ? Cut::SINK
-                             : (m_graph.seed[k] ? Cut::SOURCE : Cut::FREE);
-      if(side != m_cut.constraint(k))
-        m_cut.constrain_and_resolve({{std::size_t(k), side}});
-    }
-    collect(start);
-    return m_result;
-  }
-
-  void collect(std::chrono::steady_clock::time_point start)
-  {
-    m_result.points.clear();
-    const std::size_t n = m_nodes.size();
-    // The source side connected to the hard foreground (seeds and foreground constraints).
-    std::vector<char> source_side(n), hard(n);
-    for(std::size_t k = 0; k < n; ++k) {
-      source_side[k] = m_cut.is_source_side(k) ? 1 : 0;
-      hard[k] = m_cut.constraint(k) == Cut::SOURCE ? 1 : 0;
-    }
-    for(const auto& c : m_constrained)
-      if(c.second) {
-        const auto it = m_local.find(m_index->node_of_point(c.first));
-        if(it != m_local.end())
-          hard[it->second] = 1;
-      }
-    const std::vector<char> fg = internal::connected_to_seeds(n, m_graph.edges, hard, source_side);
-    double edge_cut = 0, fg_points = 0, fg_nodes = 0;
-    for(std::size_t e = 0; e < m_graph.edges.size(); ++e)
-      if(fg[m_graph.edges[e][0]] != fg[m_graph.edges[e][1]])
-        edge_cut += m_graph.weight[e];
-    for(std::size_t k = 0; k < n; ++k)
-      if(fg[k]) {
-        edge_cut += m_outside[k];
-        fg_points += m_graph.points[k];
-        fg_nodes += 1;
-        m_index->for_members(m_nodes[k], [&](std::uint32_t q) { m_result.points.push_back(q); });
-      }
-    // The constrained points override their nodes.
-    for(const auto& c : m_constrained)
-      if(c.second)
-        m_result.points.push_back(c.first);
-    std::sort(m_result.points.begin(), m_result.points.end());
-    m_result.points.erase(std::unique(m_result.points.begin(), m_result.points.end()), m_result.points.end());
-    m_result.points.erase(std::remove_if(m_result.points.begin(), m_result.points.end(),
-                                         [&](std::size_t q) {
-                                           const auto c = m_constrained.find(q);
-                                           return c != m_constrained.end() && !c->second;
-                                         }),
-                          m_result.points.end());
-    m_result.cut_cost = fg_nodes > 0 ? edge_cut / (fg_points / fg_nodes) : 0.0;
-    m_result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-
-  std::vector<internal::P3> m_points;
-  internal::Segmentation_options m_options;
-  internal::P3 m_location;
-  std::unique_ptr<internal::Point_columns> m_columns; // before m_index, which refers to it
-  std::unique_ptr<internal::Segmentation_index> m_index;
-  std::vector<std::uint32_t> m_nodes;
-  std::unordered_map<std::uint32_t, std::uint32_t> m_local;
-  internal::Object_graph m_graph;
-  std::vector<double> m_outside;
-  Cut m_cut;
-  std::map<std::size_t, bool> m_constrained;
-  Object_segmentation m_result;
+  internal::Interactive_min_cut<Object_segmentation> m_impl;
 };
 
 /*!

@@ -6,9 +6,9 @@
 
 /// \file partition_aware_deformation.h
 
+#include <CGAL/Randomized_cuts/internal/Deformation_constraints.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/internal/Mesh_checks.h>
-#include <CGAL/Shape_analysis/internal/Union_find.h>
 #include <CGAL/Shape_analysis/internal/Vector_3d.h>
 #include <CGAL/Shape_analysis/parameters.h>
 
@@ -22,9 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <iterator>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -72,7 +70,7 @@ triangle mesh stiff inside its parts and flexible at their boundaries, following
 function (see `partition_function()`): the weight of a halfedge \f$h\f$ of the edge \f$e\f$ is
 \f[
   w(h) = c(e)\, s(e), \qquad
-  c(e) = \max\left(\tfrac12 (\cot^+\alpha + \cot^+\beta),\ 10^{-6}\right), \qquad
+  c(e) = \max\left(\frac{1}{2} (\cot^+\alpha + \cot^+\beta),\ 10^{-6}\right), \qquad
   s(e) = f + (1 - f)\,(1 - \bar v(e))^{\gamma},
 \f]
 where
@@ -263,6 +261,43 @@ struct Partition_aware_deformation_result
   double largest_displacement = 0;
 };
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// Runs `deformation` one iteration at a time, up to `iterations`, until the largest move of a
+// vertex of `roi` in an iteration (after the first), relative to `diagonal`, is at most
+// `tolerance`.
+template <typename Deformation, typename VertexPointMap, typename ToVector, typename Vertex>
+Partition_aware_deformation_result run_deformation(Deformation& deformation, VertexPointMap vpm,
+                                                   const ToVector& to_vector, const std::vector<Vertex>& roi,
+                                                   std::size_t iterations, double tolerance, double diagonal)
+{
+  using CGAL::Shape_analysis::internal::Vector_3d;
+  Partition_aware_deformation_result result;
+  std::vector<Vector_3d> previous(roi.size());
+  for(std::size_t k = 0; k < roi.size(); ++k)
+    previous[k] = to_vector(get(vpm, roi[k]));
+  for(std::size_t it = 0; it < iterations; ++it) {
+    deformation.deform(1, 0.0);
+    ++result.number_of_iterations;
+    double largest = 0;
+    for(std::size_t k = 0; k < roi.size(); ++k) {
+      const Vector_3d p = to_vector(get(vpm, roi[k]));
+      largest = (std::max)(largest, (p - previous[k]).squared_length());
+      previous[k] = p;
+    }
+    result.largest_displacement = diagonal > 0 ? std::sqrt(largest) / diagonal : 0.0;
+    if(it > 0 && tolerance > 0 && result.largest_displacement <= tolerance) {
+      result.converged = true;
+      break;
+    }
+  }
+  return result;
+}
+
+} // namespace internal
+/// \endcond
+
 /*!
 \ingroup PkgRandomizedCutsRef
 
@@ -378,7 +413,6 @@ partition_aware_deformation(TriangleMesh& tm, EdgeValueMap partition_function_va
   using CGAL::parameters::get_parameter;
   using CGAL::Shape_analysis::Bad_input;
   using CGAL::Shape_analysis::internal::parameter_value;
-  using CGAL::Shape_analysis::internal::Vector_3d;
   namespace SNP = CGAL::Shape_analysis::internal_np;
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
@@ -414,96 +448,22 @@ partition_aware_deformation(TriangleMesh& tm, EdgeValueMap partition_function_va
                     std::to_string(Weight::maximum_spread_rings));
   const std::size_t iterations = static_cast<std::size_t>(iterations_value);
 
-  // The mesh.
+  // The mesh and the constraints.
   auto to_vector = [](const Point& p) { return internal::deformation_point(p); };
   CGAL::Shape_analysis::internal::check_triangle_mesh(tm, vpm, to_vector, who);
   auto vim = CGAL::get_initialized_vertex_index_map(tm);
-  const std::size_t n = static_cast<std::size_t>(num_vertices(tm));
-  std::vector<char> seen(n, 0);
-  for(vertex_descriptor v : vertices(tm)) {
-    const std::size_t i = static_cast<std::size_t>(get(vim, v));
-    if(i >= n || seen[i])
-      throw Bad_input(who + ": the vertex indices are not distinct numbers under num_vertices");
-    seen[i] = 1;
-  }
-  double largest_value = 0;
-  for(auto e : edges(tm)) {
-    const double v = static_cast<double>(get(partition_function_values, e));
-    if(!(v >= 0 && v <= 1))
-      throw Bad_input(who + ": a partition-function value is not in [0, 1]");
-    largest_value = (std::max)(largest_value, v);
-  }
+  const double largest_value = internal::check_deformation_input(tm, vim, partition_function_values, who);
   if(default_scale)
     scale = largest_value > 0 ? 0.5 * largest_value : 1.0;
-
-  // Constraints.
   std::vector<vertex_descriptor> controls(std::begin(control_vertices), std::end(control_vertices));
-  std::vector<Point> target_points;
-  for(const auto& p : targets) {
-    const Vector_3d q = internal::deformation_point(p);
-    if(!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
-      throw Bad_input(who + ": a target point has a coordinate that is not a finite number");
-    target_points.push_back(Point(q.x, q.y, q.z));
-  }
-  if(controls.size() != target_points.size())
-    throw Bad_input(who + ": " + std::to_string(controls.size()) + " control vertices but " +
-                    std::to_string(target_points.size()) + " targets");
-  // 0: free, 1: control, 2: fixed.
-  std::vector<char> role(n, 0);
-  std::vector<char> on_face(n, 0);
-  for(auto f : faces(tm))
-    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm))
-      on_face[static_cast<std::size_t>(get(vim, v))] = 1;
-  auto index_of = [&](vertex_descriptor v, const char* what) {
-    const std::size_t i = static_cast<std::size_t>(get(vim, v));
-    if(i >= n)
-      throw Bad_input(who + ": a " + what + " vertex is not a vertex of the mesh");
-    return i;
-  };
-  for(vertex_descriptor v : controls) {
-    const std::size_t i = index_of(v, "control");
-    if(role[i] != 0)
-      throw Bad_input(who + ": a control vertex appears twice");
-    if(!on_face[i])
-      throw Bad_input(who + ": a control vertex is on no face");
-    role[i] = 1;
-  }
+  const std::vector<Point> target_points = internal::deformation_targets<Point>(
+    targets, [](const auto& p) { return internal::deformation_point(p); }, controls.size(), who);
+  const std::vector<char> on_face = internal::vertices_on_faces(tm, vim);
   std::vector<vertex_descriptor> fixed;
-  for(vertex_descriptor v : fixed_vertices) {
-    const std::size_t i = index_of(v, "fixed");
-    if(role[i] == 1)
-      throw Bad_input(who + ": a vertex is both a control vertex and a fixed vertex");
-    if(role[i] == 2 || !on_face[i])
-      continue;
-    role[i] = 2;
-    fixed.push_back(v);
-  }
-  {
-    CGAL::Shape_analysis::internal::Union_find components(n);
-    for(auto e : edges(tm))
-      components.unite(static_cast<std::uint32_t>(get(vim, source(e, tm))),
-                       static_cast<std::uint32_t>(get(vim, target(e, tm))));
-    std::vector<char> constrained(n, 0);
-    for(std::size_t i = 0; i < n; ++i)
-      if(role[i] != 0)
-        constrained[components.find(static_cast<std::uint32_t>(i))] = 1;
-    for(std::size_t i = 0; i < n; ++i)
-      if(on_face[i] && !constrained[components.find(static_cast<std::uint32_t>(i))])
-        throw Bad_input(who + ": a connected component of the mesh has no control or fixed vertex");
-  }
-
-  // Bounding-box diagonal (for the convergence test).
-  Vector_3d lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  std::vector<vertex_descriptor> roi;
-  roi.reserve(n);
-  for(vertex_descriptor v : vertices(tm))
-    if(on_face[static_cast<std::size_t>(get(vim, v))]) {
-      roi.push_back(v);
-      const Vector_3d p = to_vector(get(vpm, v));
-      lo = lo.min(p);
-      hi = hi.max(p);
-    }
-  const double diagonal = (hi - lo).length();
+  const std::vector<char> role = internal::deformation_roles(tm, vim, on_face, controls, fixed_vertices, fixed, who);
+  internal::check_components_constrained(tm, vim, role, on_face, who);
+  double diagonal = 0;
+  const std::vector<vertex_descriptor> roi = internal::deformation_roi(tm, vim, vpm, to_vector, on_face, diagonal);
 
   // The deformation.
   typedef CGAL::Surface_mesh_deformation<TriangleMesh, CGAL::Default, CGAL::Default,
@@ -521,26 +481,7 @@ partition_aware_deformation(TriangleMesh& tm, EdgeValueMap partition_function_va
   for(std::size_t k = 0; k < controls.size(); ++k)
     deformation.set_target_position(controls[k], target_points[k]);
 
-  Partition_aware_deformation_result result;
-  std::vector<Vector_3d> previous(roi.size());
-  for(std::size_t k = 0; k < roi.size(); ++k)
-    previous[k] = to_vector(get(vpm, roi[k]));
-  for(std::size_t it = 0; it < iterations; ++it) {
-    deformation.deform(1, 0.0);
-    ++result.number_of_iterations;
-    double largest = 0;
-    for(std::size_t k = 0; k < roi.size(); ++k) {
-      const Vector_3d p = to_vector(get(vpm, roi[k]));
-      largest = (std::max)(largest, (p - previous[k]).squared_length());
-      previous[k] = p;
-    }
-    result.largest_displacement = diagonal > 0 ? std::sqrt(largest) / diagonal : 0.0;
-    if(it > 0 && tolerance > 0 && result.largest_displacement <= tolerance) {
-      result.converged = true;
-      break;
-    }
-  }
-  return result;
+  return internal::run_deformation(deformation, vpm, to_vector, roi, iterations, tolerance, diagonal);
 }
 
 } // namespace Randomized_cuts

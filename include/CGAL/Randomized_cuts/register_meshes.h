@@ -180,6 +180,62 @@ Surface_triangles registration_triangles(const TriangleMesh& tm, const MeshNP& m
   return s;
 }
 
+// `n` points sampled on the triangles of a mesh with the registration's stream `stream` (0: the
+// source, 1: the target). Two streams of their own, apart from the partition function's (seed,
+// sample) streams.
+inline std::vector<SAI::Vector_3d> registration_points(const Surface_triangles& s, std::size_t n,
+                                                       std::uint64_t seed, std::uint64_t stream)
+{
+  const std::uint64_t sampling_seed = SAI::Random_stream::mix(seed ^ 0x52656769737465ull);
+  SAI::Random_stream rng(sampling_seed, stream);
+  return sample_triangles(s, n, rng);
+}
+
+// Aligns the source points onto the target points by ICP with scale from the restarts, finished
+// against the triangles of the meshes.
+inline SAI::Restart_alignment_result
+align_registration_points(const Surface_triangles& source_triangles, const std::vector<SAI::Vector_3d>& source_points,
+                          const Surface_triangles& target_triangles, const std::vector<SAI::Vector_3d>& target_points,
+                          std::size_t iterations, double overlap, std::size_t threads)
+{
+  SAI::Restart_alignment_options o;
+  o.icp.max_iterations = iterations;
+  o.icp.keep_fraction = overlap;
+  o.number_of_threads = threads;
+  const SAI::Closest_surface_point source_surface(source_triangles.corners),
+    target_surface(target_triangles.corners);
+  return SAI::align_with_restarts(source_points, target_points, o, &source_surface, &target_surface);
+}
+
+// The result of register_meshes() from the alignment of `n_points` samples of each mesh.
+template <typename Kernel>
+Registration_result<Kernel> registration_result(const SAI::Restart_alignment_result& a, std::size_t n_points)
+{
+  typedef typename Kernel::FT FT;
+  Registration_result<Kernel> r;
+  const SAI::Similarity_3d& t = a.transform;
+  for(std::size_t i = 0; i < 3; ++i) {
+    for(int j = 0; j < 3; ++j)
+      r.rotation[i][std::size_t(j)] = t.rotation[i][j];
+    r.translation[i] = t.translation[int(i)];
+  }
+  const double s = t.scale;
+  r.transformation = CGAL::Aff_transformation_3<Kernel>(
+    FT(s * t.rotation[0].x), FT(s * t.rotation[0].y), FT(s * t.rotation[0].z), FT(t.translation.x),
+    FT(s * t.rotation[1].x), FT(s * t.rotation[1].y), FT(s * t.rotation[1].z), FT(t.translation.y),
+    FT(s * t.rotation[2].x), FT(s * t.rotation[2].y), FT(s * t.rotation[2].z), FT(t.translation.z),
+    FT(1));
+  r.scale = s;
+  r.rms_distance = a.rms;
+  r.initial_rms_distance = a.initial_rms;
+  r.number_of_restarts = a.number_of_restarts;
+  r.best_restart = a.best_restart;
+  r.number_of_iterations = a.iterations;
+  r.converged = a.converged;
+  r.number_of_points = n_points;
+  return r;
+}
+
 } // namespace internal
 /// \endcond
 
@@ -332,7 +388,6 @@ register_meshes(const TriangleMesh& source, const TriangleMesh& target,
   namespace snp = CGAL::Shape_analysis::internal_np;
   namespace SAI = CGAL::Shape_analysis::internal;
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters1>::type Kernel;
-  typedef typename Kernel::FT FT;
   const std::string who = "register_meshes";
 
   const std::size_t n_points =
@@ -386,50 +441,20 @@ register_meshes(const TriangleMesh& source, const TriangleMesh& target,
   const internal::Surface_triangles target_triangles = internal::registration_triangles(
     target, np_target, weighting ? &target_np : nullptr, who + " (target mesh)");
 
-  // Two streams of their own, apart from the partition function's (seed, sample) streams.
-  const std::uint64_t sampling_seed = SAI::Random_stream::mix(seed ^ 0x52656769737465ull);
-  SAI::Random_stream source_rng(sampling_seed, 0), target_rng(sampling_seed, 1);
   const std::vector<SAI::Vector_3d> source_points =
-    internal::sample_triangles(source_triangles, n_points, source_rng);
+    internal::registration_points(source_triangles, n_points, seed, 0);
   const std::vector<SAI::Vector_3d> target_points =
-    internal::sample_triangles(target_triangles, n_points, target_rng);
+    internal::registration_points(target_triangles, n_points, seed, 1);
 
-  SAI::Restart_alignment_options o;
-  o.icp.max_iterations = iterations;
-  o.icp.keep_fraction = overlap;
-  o.number_of_threads = threads;
   const double alignment_start = weighting ? 0.8 : 0.0;
   if(progress)
     progress(alignment_start);
-  const SAI::Closest_surface_point source_surface(source_triangles.corners),
-    target_surface(target_triangles.corners);
-  const SAI::Restart_alignment_result a =
-    SAI::align_with_restarts(source_points, target_points, o, &source_surface, &target_surface);
+  const SAI::Restart_alignment_result a = internal::align_registration_points(
+    source_triangles, source_points, target_triangles, target_points, iterations, overlap, threads);
   if(progress)
     progress(1.0);
 
-  Registration_result<Kernel> r;
-  const SAI::Similarity_3d& t = a.transform;
-  for(std::size_t i = 0; i < 3; ++i) {
-    for(int j = 0; j < 3; ++j)
-      r.rotation[i][std::size_t(j)] = t.rotation[i][j];
-    r.translation[i] = t.translation[int(i)];
-  }
-  const double s = t.scale;
-  r.transformation = CGAL::Aff_transformation_3<Kernel>(
-    FT(s * t.rotation[0].x), FT(s * t.rotation[0].y), FT(s * t.rotation[0].z), FT(t.translation.x),
-    FT(s * t.rotation[1].x), FT(s * t.rotation[1].y), FT(s * t.rotation[1].z), FT(t.translation.y),
-    FT(s * t.rotation[2].x), FT(s * t.rotation[2].y), FT(s * t.rotation[2].z), FT(t.translation.z),
-    FT(1));
-  r.scale = s;
-  r.rms_distance = a.rms;
-  r.initial_rms_distance = a.initial_rms;
-  r.number_of_restarts = a.number_of_restarts;
-  r.best_restart = a.best_restart;
-  r.number_of_iterations = a.iterations;
-  r.converged = a.converged;
-  r.number_of_points = n_points;
-  return r;
+  return internal::registration_result<Kernel>(a, n_points);
 }
 
 } // namespace Randomized_cuts

@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_symmetrization/internal/Symmetry_geometry.h>
 
 #include <CGAL/Aff_transformation_3.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
 
 #include <cmath>
@@ -152,6 +153,21 @@ Plane_3d plane_of(const Symmetry<Kernel>& s, const std::string& who)
 {
   return plane_from_coefficients(CGAL::to_double(s.plane.a()), CGAL::to_double(s.plane.b()),
                                  CGAL::to_double(s.plane.c()), CGAL::to_double(s.plane.d()), who);
+}
+
+// A mesh read through the vertex point map and traits of `np`.
+template <typename TriangleMesh, typename NamedParameters>
+Mesh_arrays<TriangleMesh> read_mesh_np(const TriangleMesh& tm, const NamedParameters& np,
+                                       const std::string& who)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, tm));
+  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
+  const SAI::Point_to_vector<Geom_traits> to_vector{
+    choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits))};
+  return read_mesh(tm, vpm, to_vector, who);
 }
 
 } // namespace internal

@@ -22,21 +22,6 @@ namespace Surface_mesh_symmetrization {
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-// A mesh read through the vertex point map and traits of `np`.
-template <typename TriangleMesh, typename NamedParameters>
-Mesh_arrays<TriangleMesh> read_mesh_np(const TriangleMesh& tm, const NamedParameters& np,
-                                       const std::string& who)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                              get_const_property_map(CGAL::vertex_point, tm));
-  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
-  const SAI::Point_to_vector<Geom_traits> to_vector{
-    choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits))};
-  return read_mesh(tm, vpm, to_vector, who);
-}
-
 template <typename Kernel>
 Symmetry<Kernel> symmetry_of(const Detected_plane& d)
 {

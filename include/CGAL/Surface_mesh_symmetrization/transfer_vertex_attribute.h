@@ -6,7 +6,7 @@
 
 /// \file transfer_vertex_attribute.h
 
-#include <CGAL/Surface_mesh_symmetrization/symmetrize.h>
+#include <CGAL/Surface_mesh_symmetrization/compute_symmetric_map.h>
 
 #include <CGAL/IO/Color.h>
 

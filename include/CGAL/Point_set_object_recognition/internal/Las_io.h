@@ -30,6 +30,7 @@
 #include <fstream>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -81,67 +82,69 @@ struct Las_data
   std::vector<std::uint16_t> red, green, blue;
 };
 
-// Reads the uncompressed LAS file `filename`; throws Bad_input with a one-line message on a file
-// it cannot read (missing, truncated, not LAS, compressed LAZ, unknown format, inconsistent sizes).
-inline Las_data read_las(const std::string& filename)
+// The error about the LAS file `filename`.
+inline CGAL::Shape_analysis::Bad_input las_error(const std::string& filename, const std::string& what)
 {
-  typedef CGAL::Shape_analysis::Bad_input Bad_input;
-  auto bad = [&](const std::string& what) { return Bad_input(filename + ": " + what); };
-  std::ifstream in;
-  open_for_reading(in, filename);
-  const std::uint64_t size = file_size(in);
-  if(size == 0)
-    throw bad("the file is empty");
+  return CGAL::Shape_analysis::Bad_input(filename + ": " + what);
+}
 
-  unsigned char h[375] = {0};
-  const std::size_t available = static_cast<std::size_t>(std::min<std::uint64_t>(size, 375));
-  if(!in.read(reinterpret_cast<char*>(h), static_cast<std::streamsize>(available)))
-    throw bad("cannot read the LAS header");
-  if(available < 4 || std::memcmp(h, "LASF", 4) != 0)
-    throw bad("not a LAS file (no \"LASF\" signature)");
-  if(size < 227)
-    throw bad("truncated LAS header (" + std::to_string(size) + " bytes, at least 227 expected)");
-
-  Las_data data;
-  Las_header& hd = data.header;
+// The fields of the public header block `h` that the reader uses, unchecked (the point data
+// format stays 0); its point data format byte and its legacy 32-bit point count.
+inline Las_header las_header_fields(const unsigned char* h, unsigned& format_byte, std::uint32_t& legacy_count)
+{
+  Las_header hd;
   hd.version_major = h[24];
   hd.version_minor = h[25];
   hd.header_size = le_u16(h + 94);
   hd.offset_to_point_data = le_u32(h + 96);
   hd.number_of_vlrs = le_u32(h + 100);
-  const unsigned format_byte = h[104];
+  format_byte = h[104];
   hd.record_length = le_u16(h + 105);
-  const std::uint32_t legacy_count = le_u32(h + 107);
+  legacy_count = le_u32(h + 107);
   for(int c = 0; c < 3; ++c) {
     hd.scale[c] = le_f64(h + 131 + 8 * c);
     hd.offset[c] = le_f64(h + 155 + 8 * c);
     hd.max[c] = le_f64(h + 179 + 16 * c);
     hd.min[c] = le_f64(h + 187 + 16 * c);
   }
+  return hd;
+}
 
+// Checks the header `hd` of the file `filename` of `size` bytes, whose point data format byte is
+// `format_byte`, and sets its point data format.
+inline void check_las_header(Las_header& hd, unsigned format_byte, std::uint64_t size, const std::string& filename)
+{
   if(hd.version_major != 1 || hd.version_minor > 4)
-    throw bad("unsupported LAS version " + std::to_string(hd.version_major) + "." +
-              std::to_string(hd.version_minor) + " (1.0 to 1.4 are read)");
+    throw las_error(filename, "unsupported LAS version " + std::to_string(hd.version_major) + "." +
+                                  std::to_string(hd.version_minor) + " (1.0 to 1.4 are read)");
   if((format_byte & 0xC0) != 0)
-    throw bad("compressed LAZ is not supported; decompress it with laszip");
+    throw las_error(filename, "compressed LAZ is not supported; decompress it with laszip");
   if(format_byte > 10)
-    throw bad("unknown LAS point data format " + std::to_string(format_byte));
+    throw las_error(filename, "unknown LAS point data format " + std::to_string(format_byte));
   hd.point_format = format_byte;
   if(hd.header_size < 227 || hd.header_size > size)
-    throw bad("invalid LAS header size " + std::to_string(hd.header_size));
+    throw las_error(filename, "invalid LAS header size " + std::to_string(hd.header_size));
   if(hd.version_minor >= 4 && hd.header_size < 375)
-    throw bad("LAS 1.4 header of " + std::to_string(hd.header_size) + " bytes (375 expected)");
+    throw las_error(filename, "LAS 1.4 header of " + std::to_string(hd.header_size) + " bytes (375 expected)");
   if(hd.offset_to_point_data < hd.header_size || hd.offset_to_point_data > size)
-    throw bad("invalid offset to point data " + std::to_string(hd.offset_to_point_data) + " (header of " +
-              std::to_string(hd.header_size) + " bytes, file of " + std::to_string(size) + " bytes)");
+    throw las_error(filename, "invalid offset to point data " + std::to_string(hd.offset_to_point_data) +
+                                  " (header of " + std::to_string(hd.header_size) + " bytes, file of " +
+                                  std::to_string(size) + " bytes)");
   const Las_format_layout& layout = las_layout(hd.point_format);
   if(hd.record_length < layout.size)
-    throw bad("point record length " + std::to_string(hd.record_length) + " is smaller than the " +
-              std::to_string(layout.size) + " bytes of point data format " + std::to_string(hd.point_format));
+    throw las_error(filename, "point record length " + std::to_string(hd.record_length) + " is smaller than the " +
+                                  std::to_string(layout.size) + " bytes of point data format " +
+                                  std::to_string(hd.point_format));
   for(int c = 0; c < 3; ++c)
     if(!std::isfinite(hd.scale[c]) || hd.scale[c] == 0 || !std::isfinite(hd.offset[c]))
-      throw bad("invalid scale factor or offset in the LAS header");
+      throw las_error(filename, "invalid scale factor or offset in the LAS header");
+}
 
+// Sets the number of points of the header `hd` (read from the header block `h`, with its legacy
+// count) and checks it against the size of the file.
+inline void set_las_point_count(Las_header& hd, const unsigned char* h, std::uint32_t legacy_count, std::uint64_t size,
+                                const std::string& filename)
+{
   // LAS 1.4 holds the count in 64 bits; the legacy 32-bit field is 0 for formats 6-10.
   hd.number_of_points = legacy_count;
   if(hd.version_minor >= 4) {
@@ -152,20 +155,28 @@ inline Las_data read_las(const std::string& filename)
   const std::uint64_t n = hd.number_of_points, length = hd.record_length;
   const std::uint64_t data_bytes = size - hd.offset_to_point_data;
   if(n > data_bytes / length)
-    throw bad("truncated point data: the header announces " + std::to_string(n) + " points of " +
-              std::to_string(length) + " bytes but only " + std::to_string(data_bytes) + " bytes follow");
+    throw las_error(filename, "truncated point data: the header announces " + std::to_string(n) + " points of " +
+                                  std::to_string(length) + " bytes but only " + std::to_string(data_bytes) +
+                                  " bytes follow");
   const std::uint64_t data_end = hd.offset_to_point_data + n * length;
   if(size > data_end) {
     // Only waveform data (1.3) or extended variable length records (1.4) may follow the points.
     const std::uint64_t waveform = hd.version_minor >= 3 ? le_u64(h + 227) : 0;
     const bool evlrs = hd.version_minor >= 4 && le_u32(h + 243) > 0 && le_u64(h + 235) >= data_end;
     if(!(waveform >= data_end || evlrs))
-      throw bad("the file size (" + std::to_string(size) + " bytes) does not match the point count: " +
-                std::to_string(n) + " points of " + std::to_string(length) + " bytes end at byte " +
-                std::to_string(data_end));
+      throw las_error(filename, "the file size (" + std::to_string(size) + " bytes) does not match the point count: " +
+                                    std::to_string(n) + " points of " + std::to_string(length) +
+                                    " bytes end at byte " + std::to_string(data_end));
   }
+}
 
-  const std::size_t count = static_cast<std::size_t>(n);
+// Reads the point records that the header of `data` announces from `in` into `data`.
+inline void read_las_records(std::ifstream& in, Las_data& data, const std::string& filename)
+{
+  const Las_header& hd = data.header;
+  const Las_format_layout& layout = las_layout(hd.point_format);
+  const std::uint64_t length = hd.record_length;
+  const std::size_t count = static_cast<std::size_t>(hd.number_of_points);
   data.xyz.resize(3 * count);
   data.intensity.resize(count);
   data.classification.resize(count);
@@ -185,7 +196,7 @@ inline Las_data read_las(const std::string& filename)
   for(std::size_t first = 0; first < count;) {
     const std::size_t m = std::min(chunk, count - first);
     if(!in.read(reinterpret_cast<char*>(buffer.data()), static_cast<std::streamsize>(m * length)))
-      throw bad("cannot read the point data");
+      throw las_error(filename, "cannot read the point data");
     for(std::size_t k = 0; k < m; ++k) {
       const unsigned char* p = buffer.data() + k * length;
       const std::size_t i = first + k;
@@ -211,54 +222,76 @@ inline Las_data read_las(const std::string& filename)
     }
     first += m;
   }
+}
+
+// Reads the uncompressed LAS file `filename`; throws Bad_input with a one-line message on a file
+// it cannot read (missing, truncated, not LAS, compressed LAZ, unknown format, inconsistent sizes).
+inline Las_data read_las(const std::string& filename)
+{
+  std::ifstream in;
+  open_for_reading(in, filename);
+  const std::uint64_t size = file_size(in);
+  if(size == 0)
+    throw las_error(filename, "the file is empty");
+
+  unsigned char h[375] = {0};
+  const std::size_t available = static_cast<std::size_t>(std::min<std::uint64_t>(size, 375));
+  if(!in.read(reinterpret_cast<char*>(h), static_cast<std::streamsize>(available)))
+    throw las_error(filename, "cannot read the LAS header");
+  if(available < 4 || std::memcmp(h, "LASF", 4) != 0)
+    throw las_error(filename, "not a LAS file (no \"LASF\" signature)");
+  if(size < 227)
+    throw las_error(filename, "truncated LAS header (" + std::to_string(size) + " bytes, at least 227 expected)");
+
+  Las_data data;
+  unsigned format_byte = 0;
+  std::uint32_t legacy_count = 0;
+  data.header = las_header_fields(h, format_byte, legacy_count);
+  check_las_header(data.header, format_byte, size, filename);
+  set_las_point_count(data.header, h, legacy_count, size, filename);
+  read_las_records(in, data, filename);
   return data;
 }
 
-// Writes `points` as an uncompressed LAS file: point data formats 0-3 as LAS 1.2, 6-8 as LAS 1.4
-// (with the 64-bit point count, legacy counts 0). A point p is stored as the integers
-// round((p + origin - offset) / scale): `origin` is the local origin that `read_point_set()`
-// subtracted, added back here. Attributes come from the properties "intensity" (unsigned short),
-// "classification", "return_number", "number_of_returns" (unsigned char), "gps_time" (double),
-// "red", "green", "blue" (unsigned short) when the point set has them with these types; otherwise
-// 0 (1 for the return number and number of returns). Written to a temporary file then renamed.
-// Throws Bad_input for an unsupported format, a scale that is not positive, a coordinate that
-// does not fit in 32 bits with this scale and offset, or an attribute too large for the format.
+// The attributes that write_las() stores, from the properties of the point set (`second`:
+// whether it has them).
+template <typename Point_set>
+struct Las_attributes
+{
+  template <typename T> using Map = std::pair<typename Point_set::template Property_map<T>, bool>;
+
+  explicit Las_attributes(const Point_set& points)
+    : intensity(points.template property_map<unsigned short>("intensity")),
+      classification(points.template property_map<unsigned char>("classification")),
+      return_number(points.template property_map<unsigned char>("return_number")),
+      number_of_returns(points.template property_map<unsigned char>("number_of_returns")),
+      gps_time(points.template property_map<double>("gps_time")),
+      red(points.template property_map<unsigned short>("red")),
+      green(points.template property_map<unsigned short>("green")),
+      blue(points.template property_map<unsigned short>("blue"))
+  {}
+
+  Map<unsigned short> intensity;
+  Map<unsigned char> classification, return_number, number_of_returns;
+  Map<double> gps_time;
+  Map<unsigned short> red, green, blue;
+};
+
+// The integer coordinates of the points (x, y, z of each), their bounding box as stored and
+// their counts by return (write_las()).
 template <typename Point>
-void write_las(const std::string& filename, const CGAL::Point_set_3<Point>& points,
-               const std::array<double, 3>& scale, const std::array<double, 3>& offset,
-               unsigned point_format = 3, const std::array<double, 3>& origin = {{0, 0, 0}})
+void las_integer_coordinates(const CGAL::Point_set_3<Point>& points, const Las_attributes<CGAL::Point_set_3<Point>>& a,
+                             const std::array<double, 3>& scale, const std::array<double, 3>& offset,
+                             const std::array<double, 3>& origin, unsigned point_format, const std::string& who,
+                             std::vector<std::int32_t>& q, std::array<double, 3>& lo, std::array<double, 3>& hi,
+                             std::uint64_t (&by_return)[15])
 {
   typedef CGAL::Shape_analysis::Bad_input Bad_input;
-  typedef CGAL::Point_set_3<Point> Point_set;
-  const std::string who = filename + ": write_las: ";
-  if(!(point_format <= 3 || (point_format >= 6 && point_format <= 8)))
-    throw Bad_input(who + "point data format " + std::to_string(point_format) +
-                    " is not written (0-3 and 6-8 are)");
-  for(int c = 0; c < 3; ++c)
-    if(!(scale[c] > 0) || !std::isfinite(scale[c]) || !std::isfinite(offset[c]) || !std::isfinite(origin[c]))
-      throw Bad_input(who + "the scale must be positive, the scale, offset and origin finite");
-  const Las_format_layout& layout = las_layout(point_format);
-  const bool extended = layout.extended;
-  const std::size_t n = points.size();
-  if(!extended && n > std::numeric_limits<std::uint32_t>::max())
-    throw Bad_input(who + "too many points for LAS 1.2 (use point format 6)");
-
-  auto u16_map = [&](const char* name) { return points.template property_map<unsigned short>(name); };
-  auto u8_map = [&](const char* name) { return points.template property_map<unsigned char>(name); };
-  const auto intensity = u16_map("intensity");
-  const auto classification = u8_map("classification");
-  const auto return_number = u8_map("return_number");
-  const auto number_of_returns = u8_map("number_of_returns");
-  const auto gps_time = points.template property_map<double>("gps_time");
-  const auto red = u16_map("red"), green = u16_map("green"), blue = u16_map("blue");
-
-  // Integer coordinates, bounding box and counts by return, then the header, then the records.
-  std::vector<std::int32_t> q(3 * n);
-  std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
-  std::uint64_t by_return[15] = {0};
+  const bool extended = las_layout(point_format).extended;
   const unsigned max_return = extended ? 15 : 7;
+  q.assign(3 * points.size(), 0);
   std::size_t k = 0;
-  for(typename Point_set::Index i : points) {
+  for(typename CGAL::Point_set_3<Point>::Index i : points) {
     const Point& p = points.point(i);
     const double w[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     for(int c = 0; c < 3; ++c) {
@@ -271,21 +304,28 @@ void write_las(const std::string& filename, const CGAL::Point_set_3<Point>& poin
       lo[c] = k == 0 ? stored : std::min(lo[c], stored);
       hi[c] = k == 0 ? stored : std::max(hi[c], stored);
     }
-    const unsigned r = return_number.second ? return_number.first[i] : 1;
-    const unsigned nr = number_of_returns.second ? number_of_returns.first[i] : 1;
+    const unsigned r = a.return_number.second ? a.return_number.first[i] : 1;
+    const unsigned nr = a.number_of_returns.second ? a.number_of_returns.first[i] : 1;
     if(r > max_return || nr > max_return)
       throw Bad_input(who + "a return number above " + std::to_string(max_return) + " does not fit format " +
                       std::to_string(point_format));
-    if(!extended && classification.second && classification.first[i] > 31)
+    if(!extended && a.classification.second && a.classification.first[i] > 31)
       throw Bad_input(who + "a classification above 31 does not fit format " + std::to_string(point_format) +
                       " (use format 6)");
     if(r >= 1)
       ++by_return[r - 1];
     ++k;
   }
+}
 
+// The public header block of a LAS file of n points (write_las()), without VLRs.
+inline void las_header_block(Le_buffer& b, unsigned point_format, std::size_t n, const std::uint64_t (&by_return)[15],
+                             const std::array<double, 3>& scale, const std::array<double, 3>& offset,
+                             const std::array<double, 3>& lo, const std::array<double, 3>& hi)
+{
+  const Las_format_layout& layout = las_layout(point_format);
+  const bool extended = layout.extended;
   const unsigned header_size = extended ? 375 : 227;
-  Le_buffer b;
   b.text("LASF", 4);
   b.u16(0);                    // file source id
   b.u16(extended ? 0x10 : 0);  // global encoding (WKT bit, required with formats 6-10)
@@ -320,41 +360,87 @@ void write_las(const std::string& filename, const CGAL::Point_set_3<Point>& poin
     for(int r = 0; r < 15; ++r)
       b.u64(by_return[r]);
   }
+}
+
+// The point record of point i (integer coordinates `q`) in point data format `point_format`.
+template <typename Point_set>
+void append_las_record(Le_buffer& b, const Las_attributes<Point_set>& a, typename Point_set::Index i,
+                       const std::int32_t* q, unsigned point_format)
+{
+  const Las_format_layout& layout = las_layout(point_format);
+  for(int c = 0; c < 3; ++c)
+    b.i32(q[c]);
+  b.u16(a.intensity.second ? a.intensity.first[i] : 0);
+  const unsigned r = a.return_number.second ? a.return_number.first[i] : 1;
+  const unsigned nr = a.number_of_returns.second ? a.number_of_returns.first[i] : 1;
+  const unsigned cls = a.classification.second ? a.classification.first[i] : 0;
+  if(layout.extended) {
+    b.u8(r | (nr << 4));
+    b.u8(0);  // classification flags, scanner channel, scan direction, edge of flight line
+    b.u8(cls);
+    b.u8(0);   // user data
+    b.u16(0);  // scan angle
+    b.u16(0);  // point source id
+  } else {
+    b.u8(r | (nr << 3));
+    b.u8(cls);
+    b.u8(0);   // scan angle rank
+    b.u8(0);   // user data
+    b.u16(0);  // point source id
+  }
+  if(layout.gps_time >= 0)
+    b.f64(a.gps_time.second ? a.gps_time.first[i] : 0.);
+  if(layout.rgb >= 0) {
+    b.u16(a.red.second ? a.red.first[i] : 0);
+    b.u16(a.green.second ? a.green.first[i] : 0);
+    b.u16(a.blue.second ? a.blue.first[i] : 0);
+  }
+  if(point_format == 8)
+    b.u16(0);  // near infrared
+}
+
+// Writes `points` as an uncompressed LAS file: point data formats 0-3 as LAS 1.2, 6-8 as LAS 1.4
+// (with the 64-bit point count, legacy counts 0). A point p is stored as the integers
+// round((p + origin - offset) / scale): `origin` is the local origin that `read_point_set()`
+// subtracted, added back here. Attributes come from the properties "intensity" (unsigned short),
+// "classification", "return_number", "number_of_returns" (unsigned char), "gps_time" (double),
+// "red", "green", "blue" (unsigned short) when the point set has them with these types; otherwise
+// 0 (1 for the return number and number of returns). Written to a temporary file then renamed.
+// Throws Bad_input for an unsupported format, a scale that is not positive, a coordinate that
+// does not fit in 32 bits with this scale and offset, or an attribute too large for the format.
+template <typename Point>
+void write_las(const std::string& filename, const CGAL::Point_set_3<Point>& points,
+               const std::array<double, 3>& scale, const std::array<double, 3>& offset,
+               unsigned point_format = 3, const std::array<double, 3>& origin = {{0, 0, 0}})
+{
+  typedef CGAL::Shape_analysis::Bad_input Bad_input;
+  typedef CGAL::Point_set_3<Point> Point_set;
+  const std::string who = filename + ": write_las: ";
+  if(!(point_format <= 3 || (point_format >= 6 && point_format <= 8)))
+    throw Bad_input(who + "point data format " + std::to_string(point_format) +
+                    " is not written (0-3 and 6-8 are)");
+  for(int c = 0; c < 3; ++c)
+    if(!(scale[c] > 0) || !std::isfinite(scale[c]) || !std::isfinite(offset[c]) || !std::isfinite(origin[c]))
+      throw Bad_input(who + "the scale must be positive, the scale, offset and origin finite");
+  const std::size_t n = points.size();
+  if(!las_layout(point_format).extended && n > std::numeric_limits<std::uint32_t>::max())
+    throw Bad_input(who + "too many points for LAS 1.2 (use point format 6)");
+  const Las_attributes<Point_set> attributes(points);
+
+  // Integer coordinates, bounding box and counts by return, then the header, then the records.
+  std::vector<std::int32_t> q;
+  std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
+  std::uint64_t by_return[15] = {0};
+  las_integer_coordinates(points, attributes, scale, offset, origin, point_format, who, q, lo, hi, by_return);
+  Le_buffer b;
+  las_header_block(b, point_format, n, by_return, scale, offset, lo, hi);
 
   Atomic_output_file out(filename);
   out.write(b.bytes);
   b.bytes.clear();
-  k = 0;
+  std::size_t k = 0;
   for(typename Point_set::Index i : points) {
-    for(int c = 0; c < 3; ++c)
-      b.i32(q[3 * k + c]);
-    b.u16(intensity.second ? intensity.first[i] : 0);
-    const unsigned r = return_number.second ? return_number.first[i] : 1;
-    const unsigned nr = number_of_returns.second ? number_of_returns.first[i] : 1;
-    const unsigned cls = classification.second ? classification.first[i] : 0;
-    if(extended) {
-      b.u8(r | (nr << 4));
-      b.u8(0);  // classification flags, scanner channel, scan direction, edge of flight line
-      b.u8(cls);
-      b.u8(0);   // user data
-      b.u16(0);  // scan angle
-      b.u16(0);  // point source id
-    } else {
-      b.u8(r | (nr << 3));
-      b.u8(cls);
-      b.u8(0);   // scan angle rank
-      b.u8(0);   // user data
-      b.u16(0);  // point source id
-    }
-    if(layout.gps_time >= 0)
-      b.f64(gps_time.second ? gps_time.first[i] : 0.);
-    if(layout.rgb >= 0) {
-      b.u16(red.second ? red.first[i] : 0);
-      b.u16(green.second ? green.first[i] : 0);
-      b.u16(blue.second ? blue.first[i] : 0);
-    }
-    if(point_format == 8)
-      b.u16(0);  // near infrared
+    append_las_record(b, attributes, i, q.data() + 3 * k, point_format);
     if(b.bytes.size() >= (1 << 20)) {
       out.write(b.bytes);
       b.bytes.clear();

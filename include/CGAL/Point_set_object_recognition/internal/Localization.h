@@ -166,20 +166,14 @@ inline std::vector<std::uint32_t> height_image_clusters(const std::vector<std::a
   return cluster;
 }
 
-// Normalized-cut clustering of the voxels of side `cell` (nodes: the voxels' centroids, of size
-// 1 each), joined to their 4 nearest neighbours with weights exp(-d^2 / (2 cell^2)); the closest
-// nodes of disconnected components within 5 cells are linked (shared component links, reweighted
-// the same way). Clusters merge greedily by the decrease of sum cut(S) / size(S) (shared
-// clustering core), while the normalized cut between the two, w(S, T) (1/|S| + 1/|T|), is at
-// least `threshold`. Nearest-neighbour searches run on `threads` threads.
-inline std::vector<std::uint32_t> normalized_cut_clusters(const std::vector<std::array<double, 3>>& p, double cell,
-                                                          double threshold, const std::array<double, 3>& lo,
-                                                          std::size_t threads, std::size_t& number_of_clusters)
+// The nodes of normalized_cut_clusters(): the voxels of side `cell`, numbered by their first
+// point (per point its node), at their centroids, of size 1 each.
+inline void voxel_nodes(const std::vector<std::array<double, 3>>& p, double cell, const std::array<double, 3>& lo,
+                        std::vector<std::uint32_t>& node_of_point, CGAL::Shape_analysis::internal::Dual_graph& g)
 {
   namespace SAI = CGAL::Shape_analysis::internal;
-  // Voxel nodes, numbered by their first point.
   std::unordered_map<std::uint64_t, std::uint32_t> index;
-  std::vector<std::uint32_t> node_of_point(p.size());
+  node_of_point.resize(p.size());
   std::vector<std::array<double, 4>> sum; // x, y, z, count
   for(std::size_t i = 0; i < p.size(); ++i) {
     const auto ins = index.emplace(voxel_key(p[i][0], p[i][1], p[i][2], cell, lo), std::uint32_t(sum.size()));
@@ -190,7 +184,6 @@ inline std::vector<std::uint32_t> normalized_cut_clusters(const std::vector<std:
     node_of_point[i] = ins.first->second;
   }
   const std::size_t n = sum.size();
-  SAI::Dual_graph g;
   g.node_size.assign(n, 1.0);
   g.node_position.resize(n);
   g.node_normal.assign(n, SAI::Vector_3d(0.0));
@@ -201,8 +194,22 @@ inline std::vector<std::uint32_t> normalized_cut_clusters(const std::vector<std:
     box_hi = box_hi.max(g.node_position[v]);
   }
   g.bbox_diagonal = (std::max)(cell, (box_hi - box_lo).length());
-  // The 4 nearest neighbours of every node (in parallel, one result per node).
-  const std::size_t k = 4;
+}
+
+// The weight exp(-d^2 / (2 cell^2)) of the edge between nodes a and b of `g`.
+inline double voxel_edge_weight(const CGAL::Shape_analysis::internal::Dual_graph& g, double cell, std::uint32_t a,
+                                std::uint32_t b)
+{
+  const double s2 = 2 * cell * cell;
+  return std::exp(-(g.node_position[a] - g.node_position[b]).squared_length() / s2);
+}
+
+// The edges of every node of `g` to its 4 nearest neighbours (found in parallel, one result per
+// node), each once, by increasing pair of nodes.
+inline void add_nearest_voxel_edges(CGAL::Shape_analysis::internal::Dual_graph& g, double cell, std::size_t threads)
+{
+  namespace SAI = CGAL::Shape_analysis::internal;
+  const std::size_t n = g.node_position.size(), k = 4;
   std::vector<std::uint32_t> ids(n);
   for(std::size_t v = 0; v < n; ++v)
     ids[v] = std::uint32_t(v);
@@ -217,10 +224,6 @@ inline std::vector<std::uint32_t> normalized_cut_clusters(const std::vector<std:
       if(f.second != v && m < k)
         near[v][m++] = f.second;
   });
-  const double s2 = 2 * cell * cell;
-  const auto weight = [&](std::uint32_t a, std::uint32_t b) {
-    return std::exp(-(g.node_position[a] - g.node_position[b]).squared_length() / s2);
-  };
   std::vector<std::uint64_t> pairs;
   pairs.reserve(k * n);
   for(std::size_t v = 0; v < n; ++v)
@@ -231,8 +234,43 @@ inline std::vector<std::uint32_t> normalized_cut_clusters(const std::vector<std:
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   for(std::size_t e = 0; e < pairs.size(); ++e) {
     const std::uint32_t a = std::uint32_t(pairs[e] >> 32), b = std::uint32_t(pairs[e] & 0xffffffffu);
-    g.add_edge(a, b, 0.0, 1.0, weight(a, b), 0.0, e);
+    g.add_edge(a, b, 0.0, 1.0, voxel_edge_weight(g, cell, a, b), 0.0, e);
   }
+}
+
+// Voxels joined by strong edges (closer than 1.5 voxels: the normalized cut between two such
+// voxels, 2 w, is far above any sensible threshold) start together, which spares the queue most
+// of its work on large scenes.
+inline void merge_strong_edges(CGAL::Shape_analysis::internal::Normalized_cut_clustering& clustering, std::size_t n,
+                               const std::vector<std::uint32_t>& source, const std::vector<std::uint32_t>& target,
+                               const std::vector<double>& w, double threshold)
+{
+  const double strong = 0.3;
+  CGAL::Shape_analysis::internal::Union_find together(n);
+  for(std::size_t e = 0; e < w.size(); ++e)
+    if(w[e] >= strong && 2 * w[e] >= threshold)
+      together.unite(source[e], target[e]);
+  std::vector<std::uint32_t> group;
+  together.dense_labels(group);
+  clustering.merge_groups(group);
+}
+
+// Normalized-cut clustering of the voxels of side `cell` (nodes: the voxels' centroids, of size
+// 1 each), joined to their 4 nearest neighbours with weights exp(-d^2 / (2 cell^2)); the closest
+// nodes of disconnected components within 5 cells are linked (shared component links, reweighted
+// the same way). Clusters merge greedily by the decrease of sum cut(S) / size(S) (shared
+// clustering core), while the normalized cut between the two, w(S, T) (1/|S| + 1/|T|), is at
+// least `threshold`. Nearest-neighbour searches run on `threads` threads.
+inline std::vector<std::uint32_t> normalized_cut_clusters(const std::vector<std::array<double, 3>>& p, double cell,
+                                                          double threshold, const std::array<double, 3>& lo,
+                                                          std::size_t threads, std::size_t& number_of_clusters)
+{
+  namespace SAI = CGAL::Shape_analysis::internal;
+  std::vector<std::uint32_t> node_of_point;
+  SAI::Dual_graph g;
+  voxel_nodes(p, cell, lo, node_of_point, g);
+  const std::size_t n = g.node_position.size();
+  add_nearest_voxel_edges(g, cell, threads);
   // Links between the components of the graph: the closest nodes within 5 cells.
   SAI::Component_link_options links;
   links.link_distance = 5 * cell / g.bbox_diagonal;
@@ -242,8 +280,9 @@ inline std::vector<std::uint32_t> normalized_cut_clusters(const std::vector<std:
   std::vector<std::uint32_t> source, target;
   std::vector<double> w;
   for(std::size_t e = 0; e < g.number_of_edges(); ++e) {
-    const double we = g.mesh_edge[e] == SAI::Dual_graph::no_mesh_edge ? weight(g.edge_source[e], g.edge_target[e])
-                                                                        : g.cut_cost[e];
+    const double we = g.mesh_edge[e] == SAI::Dual_graph::no_mesh_edge
+                        ? voxel_edge_weight(g, cell, g.edge_source[e], g.edge_target[e])
+                        : g.cut_cost[e];
     if(!(we > 1e-9))
       continue;
     source.push_back(g.edge_source[e]);
@@ -251,19 +290,7 @@ inline std::vector<std::uint32_t> normalized_cut_clusters(const std::vector<std:
     w.push_back(we);
   }
   SAI::Normalized_cut_clustering clustering(sizes, source, target, w);
-  {
-    // Voxels joined by strong edges (closer than 1.5 voxels: the normalized cut between two such
-    // voxels, 2 w, is far above any sensible threshold) start together, which spares the queue
-    // most of its work on large scenes.
-    const double strong = 0.3;
-    SAI::Union_find together(n);
-    for(std::size_t e = 0; e < w.size(); ++e)
-      if(w[e] >= strong && 2 * w[e] >= threshold)
-        together.unite(source[e], target[e]);
-    std::vector<std::uint32_t> group;
-    together.dense_labels(group);
-    clustering.merge_groups(group);
-  }
+  merge_strong_edges(clustering, n, source, target, w, threshold);
   const auto between = [&](std::uint32_t a, std::uint32_t b) {
     const auto& list = clustering.neighbors(a);
     const auto it = std::lower_bound(list.begin(), list.end(), b,

@@ -15,6 +15,7 @@
 #include <CGAL/Randomized_cuts/internal/Cut_sampling.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <vector>
@@ -113,6 +114,76 @@ inline void two_sides(const Dual_graph& g, const Sample& sample, std::size_t sca
     side[i] = 0;
 }
 
+// The smaller side of the two-sided cut of `cut_edges` (the side of `source` or its complement,
+// sorted) and its size, in `candidate`. `is_cut` (all 0, one per graph edge) is left as it was given;
+// `side` and `seen` are scratch.
+inline void set_smaller_side(const Dual_graph& g, std::uint32_t source,
+                             const std::vector<std::uint32_t>& cut_edges, double total_size,
+                             std::vector<char>& is_cut, std::vector<std::uint32_t>& side,
+                             std::vector<char>& seen, Graph_cut& candidate)
+{
+  for(std::uint32_t e : cut_edges)
+    is_cut[e] = 1;
+  side_of(g, source, is_cut, side, seen);
+  for(std::uint32_t e : cut_edges)
+    is_cut[e] = 0;
+  double size = 0;
+  for(std::uint32_t v : side)
+    size += g.node_size[v];
+  if(2 * size <= total_size) {
+    candidate.smaller_side = side;
+    candidate.smaller_size = size;
+  } else {
+    // The complement, sorted.
+    candidate.smaller_side.clear();
+    std::size_t k = 0;
+    for(std::uint32_t v = 0; v < g.number_of_nodes(); ++v) {
+      if(k < side.size() && side[k] == v) {
+        ++k;
+        continue;
+      }
+      candidate.smaller_side.push_back(v);
+    }
+    candidate.smaller_size = total_size - size;
+  }
+}
+
+// Whether the two-sided cut `candidate` (whose edges differ from those of `kept`) counts as `kept`:
+// the smaller sides, or one and the other's complement, differ by at most `duplicate_fraction` of
+// the smaller of the two sides' sizes.
+inline bool same_two_sided_cut(const Dual_graph& g, const Graph_cut& kept, const Graph_cut& candidate,
+                               double total_size, double duplicate_fraction)
+{
+  const double limit =
+    duplicate_fraction * (std::min)(kept.smaller_size, candidate.smaller_size);
+  // The symmetric difference of the smaller sides is at least their size difference; with
+  // the sides swapped, at least the difference of one with the other's complement.
+  const double direct_bound = std::abs(kept.smaller_size - candidate.smaller_size);
+  const double swapped_bound =
+    std::abs(kept.smaller_size - (total_size - candidate.smaller_size));
+  if(direct_bound > limit && swapped_bound > limit)
+    return false;
+  double common = 0;
+  auto a = kept.smaller_side.begin(), b = candidate.smaller_side.begin();
+  while(a != kept.smaller_side.end() && b != candidate.smaller_side.end()) {
+    if(*a < *b)
+      ++a;
+    else if(*b < *a)
+      ++b;
+    else {
+      common += g.node_size[*a];
+      ++a;
+      ++b;
+    }
+  }
+  const double difference = kept.smaller_size + candidate.smaller_size - 2 * common;
+  // Swapped: kept's side against the complement of the candidate's.
+  const double swapped = total_size - difference;
+  // Sides of zero area (degenerate faces) are only duplicates when they are the same faces.
+  return limit > 0 ? (std::min)(difference, swapped) <= limit
+                   : kept.smaller_side == candidate.smaller_side;
+}
+
 // The distinct cuts of the samples, most consistent first.
 inline std::vector<Graph_cut> distinct_cuts(const Dual_graph& g, const std::vector<Sample>& samples,
                                             const std::vector<double>& values, std::size_t scale,
@@ -141,67 +212,15 @@ inline std::vector<Graph_cut> distinct_cuts(const Dual_graph& g, const std::vect
     Graph_cut candidate;
     candidate.cut_edges = c.cut_edges;
     candidate.two_sided = two_sided;
-    if(two_sided) {
-      for(std::uint32_t e : c.cut_edges)
-        is_cut[e] = 1;
-      side_of(g, samples[i].source, is_cut, side, seen);
-      for(std::uint32_t e : c.cut_edges)
-        is_cut[e] = 0;
-      double size = 0;
-      for(std::uint32_t v : side)
-        size += g.node_size[v];
-      if(2 * size <= total_size) {
-        candidate.smaller_side = side;
-        candidate.smaller_size = size;
-      } else {
-        // The complement, sorted.
-        candidate.smaller_side.clear();
-        std::size_t k = 0;
-        for(std::uint32_t v = 0; v < g.number_of_nodes(); ++v) {
-          if(k < side.size() && side[k] == v) {
-            ++k;
-            continue;
-          }
-          candidate.smaller_side.push_back(v);
-        }
-        candidate.smaller_size = total_size - size;
-      }
-    }
+    if(two_sided)
+      set_smaller_side(g, samples[i].source, c.cut_edges, total_size, is_cut, side, seen, candidate);
     // A duplicate of a kept cut?
     bool merged = false;
     for(Graph_cut& kept : result) {
-      if(kept.cut_edges == candidate.cut_edges) {
+      if(kept.cut_edges == candidate.cut_edges)
         merged = true;
-      } else if(two_sided) {
-        const double limit =
-          duplicate_fraction * (std::min)(kept.smaller_size, candidate.smaller_size);
-        // The symmetric difference of the smaller sides is at least their size difference; with
-        // the sides swapped, at least the difference of one with the other's complement.
-        const double direct_bound = std::abs(kept.smaller_size - candidate.smaller_size);
-        const double swapped_bound =
-          std::abs(kept.smaller_size - (total_size - candidate.smaller_size));
-        if(direct_bound > limit && swapped_bound > limit)
-          continue;
-        double common = 0;
-        auto a = kept.smaller_side.begin(), b = candidate.smaller_side.begin();
-        while(a != kept.smaller_side.end() && b != candidate.smaller_side.end()) {
-          if(*a < *b)
-            ++a;
-          else if(*b < *a)
-            ++b;
-          else {
-            common += g.node_size[*a];
-            ++a;
-            ++b;
-          }
-        }
-        const double difference = kept.smaller_size + candidate.smaller_size - 2 * common;
-        // Swapped: kept's side against the complement of the candidate's.
-        const double swapped = total_size - difference;
-        // Sides of zero area (degenerate faces) are only duplicates when they are the same faces.
-        merged = limit > 0 ? (std::min)(difference, swapped) <= limit
-                           : kept.smaller_side == candidate.smaller_side;
-      }
+      else if(two_sided)
+        merged = same_two_sided_cut(g, kept, candidate, total_size, duplicate_fraction);
       if(merged) {
         ++kept.occurrences;
         break;

@@ -168,22 +168,10 @@ struct Point_to_vector
   }
 };
 
-// Builds the dual graph of a triangle mesh. `fim` maps the faces to 0..n-1; `to_vector` turns
-// the points of `vpm` into Vector_3d.
-//
-// Concavity needs the outward orientation. A halfedge mesh is consistently oriented within each
-// connected component; a component that is closed or nearly closed (border edges under 30% of
-// its edge length, e.g. a scan with a few holes) and whose faces point inwards (negative signed
-// volume, measured from its centroid) has its normals flipped, so that the result does not
-// depend on the orientation the file happened to have. An open surface (a strip, a terrain)
-// has no inside: it keeps the orientation it was given.
-template <typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap, typename ToVector>
-void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap fim, double alpha,
-                      Dual_graph& g, const ToVector& to_vector)
+// The exponent of the power of two by which build_dual_graph() scales the coordinates (0: none).
+template <typename TriangleMesh, typename VertexPointMap, typename ToVector>
+int dual_graph_exponent(const TriangleMesh& tm, VertexPointMap vpm, const ToVector& to_vector)
 {
-  typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
-
   // Coordinates beyond 2^128 or under 2^-128 (in the largest absolute value over the face
   // corners) would overflow or underflow the squared lengths of cross products: they are scaled
   // exactly, by the power of two that brings that value into [0.5, 1). Others are left alone.
@@ -196,22 +184,16 @@ void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap f
   int exponent = 0;
   if(largest > 0 && std::isfinite(largest) && (largest > 0x1p128 || largest < 0x1p-128))
     std::frexp(largest, &exponent);
-  const double scale = std::ldexp(1.0, -exponent);
-  auto point = [&](typename GT::vertex_descriptor v) { return to_vector(get(vpm, v)) * scale; };
+  return exponent;
+}
 
-  // Faces are counted through the index map (num_faces() of a Surface_mesh with removed faces
-  // counts them too): `fim` must map the faces to 0..n-1.
-  std::size_t n = 0;
-  for(auto f : faces(tm))
-    n = (std::max)(n, static_cast<std::size_t>(get(fim, f)) + 1);
-  if(n >= std::size_t((std::numeric_limits<std::uint32_t>::max)()))
-    throw Bad_input("the mesh has too many faces (at most 2^32 - 2)");
-  g = Dual_graph();
-  g.length_unit = std::ldexp(1.0, exponent);
-  g.node_size.assign(n, 0.0);
-  g.node_position.assign(n, Vector_3d());
-  g.node_normal.assign(n, Vector_3d());
-
+// The nodes of the dual graph `g` (sized already): area, centroid and normal of every face of
+// `tm` (`point` gives the scaled coordinates of a vertex), and the bounding-box diagonal.
+template <typename TriangleMesh, typename FaceIndexMap, typename PointOf>
+void set_dual_graph_nodes(const TriangleMesh& tm, FaceIndexMap fim, const PointOf& point, Dual_graph& g)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  const std::size_t n = g.number_of_nodes();
   // Faces: area, centroid, normal; bounding box of the face corners (unused vertices ignored).
   Vector_3d lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for(auto f : faces(tm)) {
@@ -228,7 +210,15 @@ void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap f
     g.node_normal[i] = twice_area > 0 ? c / twice_area : Vector_3d();
   }
   g.bbox_diagonal = n > 0 ? (hi - lo).length() : 0.0;
+}
 
+// Flips the normals of the nodes of every closed or nearly closed component whose faces point
+// inwards (see build_dual_graph()).
+template <typename TriangleMesh, typename FaceIndexMap, typename PointOf>
+void orient_dual_graph_nodes(const TriangleMesh& tm, FaceIndexMap fim, const PointOf& point, Dual_graph& g)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  const std::size_t n = g.number_of_nodes();
   // Connected components through interior edges, then one orientation per component. Each edge's
   // length is credited to one of its faces (and to the border when it has only one), then
   // summed per component.
@@ -270,7 +260,15 @@ void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap f
     if(signed_volume[c] < 0 && border_length[c] < 0.3 * edge_length_sum[c])
       g.node_normal[i] *= -1.0;
   }
+}
 
+// The edges of the dual graph: one per interior mesh edge between two distinct faces, with its
+// length, concavity weight and costs; the mesh edge count and mean length.
+template <typename TriangleMesh, typename FaceIndexMap, typename PointOf>
+void add_dual_graph_edges(const TriangleMesh& tm, FaceIndexMap fim, const PointOf& point, double alpha,
+                          Dual_graph& g)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   std::size_t rank = 0;
   double length_sum = 0;
   g.edge_source.reserve(static_cast<std::size_t>(num_edges(tm)));
@@ -304,6 +302,42 @@ void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap f
   }
   g.number_of_mesh_edges = rank;
   g.mean_mesh_edge_length = rank > 0 ? length_sum / double(rank) : 0.0;
+}
+
+// Builds the dual graph of a triangle mesh. `fim` maps the faces to 0..n-1; `to_vector` turns
+// the points of `vpm` into Vector_3d.
+//
+// Concavity needs the outward orientation. A halfedge mesh is consistently oriented within each
+// connected component; a component that is closed or nearly closed (border edges under 30% of
+// its edge length, e.g. a scan with a few holes) and whose faces point inwards (negative signed
+// volume, measured from its centroid) has its normals flipped, so that the result does not
+// depend on the orientation the file happened to have. An open surface (a strip, a terrain)
+// has no inside: it keeps the orientation it was given.
+template <typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap, typename ToVector>
+void build_dual_graph(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap fim, double alpha,
+                      Dual_graph& g, const ToVector& to_vector)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  const int exponent = dual_graph_exponent(tm, vpm, to_vector);
+  const double scale = std::ldexp(1.0, -exponent);
+  auto point = [&](typename GT::vertex_descriptor v) { return to_vector(get(vpm, v)) * scale; };
+
+  // Faces are counted through the index map (num_faces() of a Surface_mesh with removed faces
+  // counts them too): `fim` must map the faces to 0..n-1.
+  std::size_t n = 0;
+  for(auto f : faces(tm))
+    n = (std::max)(n, static_cast<std::size_t>(get(fim, f)) + 1);
+  if(n >= std::size_t((std::numeric_limits<std::uint32_t>::max)()))
+    throw Bad_input("the mesh has too many faces (at most 2^32 - 2)");
+  g = Dual_graph();
+  g.length_unit = std::ldexp(1.0, exponent);
+  g.node_size.assign(n, 0.0);
+  g.node_position.assign(n, Vector_3d());
+  g.node_normal.assign(n, Vector_3d());
+
+  set_dual_graph_nodes(tm, fim, point, g);
+  orient_dual_graph_nodes(tm, fim, point, g);
+  add_dual_graph_edges(tm, fim, point, alpha, g);
   g.build_adjacency();
 }
 

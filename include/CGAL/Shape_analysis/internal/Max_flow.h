@@ -74,13 +74,11 @@ public:
 
 private:
   // Augments the flow whose residual capacities are in `w.residual` to a maximum one; returns
-  // the flow added.
+  // the flow added. Growth, augmentation and adoption are member functions of their own, defined
+  // in the class (inline) and called once per augmentation: the split costs no speed.
   double augment_to_maximum(Index source, Index sink, Workspace& w) const
   {
     const std::size_t n = number_of_nodes();
-    const std::vector<std::size_t>& first = *m_first;
-    const std::vector<Index>& target = *m_target;
-    const std::vector<Index>& reverse = *m_reverse;
     w.tree.assign(n, FREE);
     w.parent.assign(n, none);
     w.distance.assign(n, 0);
@@ -96,109 +94,126 @@ private:
     w.parent[source] = w.parent[sink] = terminal;
     w.stamp[source] = w.stamp[sink] = time;
     std::size_t active_head = 0;
-    auto activate = [&](Index v) {
-      if(!w.active_flag[v]) {
-        w.active_flag[v] = 1;
-        w.active.push_back(v);
-      }
-    };
-    activate(source);
-    activate(sink);
+    activate(source, w);
+    activate(sink, w);
     double flow = 0;
 
     for(;;) {
-      // Growth: find an arc from the source tree to the sink tree.
-      Index bridge = none; // arc from a source-tree node to a sink-tree node
-      while(active_head < w.active.size()) {
-        const Index p = w.active[active_head];
-        if(w.tree[p] == FREE) {
-          w.active_flag[p] = 0;
-          ++active_head;
-          continue;
-        }
-        const bool in_source = w.tree[p] == SOURCE_TREE;
-        for(std::size_t a = first[p]; a < first[p + 1]; ++a) {
-          const Index q = target[a];
-          // Residual capacity in the direction of the flow: p->q in the source tree, q->p in
-          // the sink tree.
-          if(!(w.residual[in_source ? a : reverse[a]] > 0))
-            continue;
-          if(w.tree[q] == FREE) {
-            w.tree[q] = w.tree[p];
-            w.parent[q] = reverse[a];
-            w.distance[q] = w.distance[p] + 1;
-            w.stamp[q] = w.stamp[p];
-            activate(q);
-          } else if(w.tree[q] != w.tree[p]) {
-            bridge = in_source ? Index(a) : reverse[a];
-            break;
-          } else if(w.stamp[q] <= w.stamp[p] && w.distance[q] > w.distance[p]) {
-            // A shorter way to the root for q.
-            w.parent[q] = reverse[a];
-            w.distance[q] = w.distance[p] + 1;
-            w.stamp[q] = w.stamp[p];
-          }
-        }
-        if(bridge != none)
-          break; // p stays active
-        w.active_flag[p] = 0;
-        ++active_head;
-      }
+      const Index bridge = grow(active_head, w);
       if(bridge == none)
         break;
-      if(active_head > 4096 && 2 * active_head > w.active.size()) {
-        w.active.erase(w.active.begin(), w.active.begin() + std::ptrdiff_t(active_head));
-        active_head = 0;
-      }
-
-      // Augmentation along source ... x -> y ... sink.
       ++time;
-      const Index x = target[reverse[bridge]], y = target[bridge];
-      double bottleneck = w.residual[bridge];
-      for(Index v = x; w.parent[v] != terminal; v = target[w.parent[v]])
-        bottleneck = (std::min)(bottleneck, w.residual[reverse[w.parent[v]]]);
-      for(Index v = y; w.parent[v] != terminal; v = target[w.parent[v]])
-        bottleneck = (std::min)(bottleneck, w.residual[w.parent[v]]);
-      w.residual[bridge] -= bottleneck;
-      w.residual[reverse[bridge]] += bottleneck;
-      for(Index v = x; w.parent[v] != terminal;) {
-        const Index up = w.parent[v]; // v -> parent; the flow goes parent -> v
-        const Index next = target[up];
-        w.residual[reverse[up]] -= bottleneck;
-        w.residual[up] += bottleneck;
-        if(!(w.residual[reverse[up]] > 0)) {
-          w.parent[v] = orphan;
-          w.orphans.push_back(v);
-        }
-        v = next;
-      }
-      for(Index v = y; w.parent[v] != terminal;) {
-        const Index up = w.parent[v]; // the flow goes v -> parent
-        const Index next = target[up];
-        w.residual[up] -= bottleneck;
-        w.residual[reverse[up]] += bottleneck;
-        if(!(w.residual[up] > 0)) {
-          w.parent[v] = orphan;
-          w.orphans.push_back(v);
-        }
-        v = next;
-      }
-      flow += bottleneck;
-
+      flow += augment(bridge, w);
       // Adoption.
       for(std::size_t k = 0; k < w.orphans.size(); ++k)
-        adopt(w.orphans[k], time, w, activate);
+        adopt(w.orphans[k], time, w);
       w.orphans.clear();
     }
     return flow;
+  }
+
+  static void activate(Index v, Workspace& w)
+  {
+    if(!w.active_flag[v]) {
+      w.active_flag[v] = 1;
+      w.active.push_back(v);
+    }
+  }
+
+  // Growth: returns an arc from the source tree to the sink tree (`none` when there is none left:
+  // the flow is maximum), growing the trees from the active nodes `w.active[active_head..]`.
+  Index grow(std::size_t& active_head, Workspace& w) const
+  {
+    const std::vector<std::size_t>& first = *m_first;
+    const std::vector<Index>& target = *m_target;
+    const std::vector<Index>& reverse = *m_reverse;
+    Index bridge = none; // arc from a source-tree node to a sink-tree node
+    while(active_head < w.active.size()) {
+      const Index p = w.active[active_head];
+      if(w.tree[p] == FREE) {
+        w.active_flag[p] = 0;
+        ++active_head;
+        continue;
+      }
+      const bool in_source = w.tree[p] == SOURCE_TREE;
+      for(std::size_t a = first[p]; a < first[p + 1]; ++a) {
+        const Index q = target[a];
+        // Residual capacity in the direction of the flow: p->q in the source tree, q->p in
+        // the sink tree.
+        if(!(w.residual[in_source ? a : reverse[a]] > 0))
+          continue;
+        if(w.tree[q] == FREE) {
+          w.tree[q] = w.tree[p];
+          w.parent[q] = reverse[a];
+          w.distance[q] = w.distance[p] + 1;
+          w.stamp[q] = w.stamp[p];
+          activate(q, w);
+        } else if(w.tree[q] != w.tree[p]) {
+          bridge = in_source ? Index(a) : reverse[a];
+          break;
+        } else if(w.stamp[q] <= w.stamp[p] && w.distance[q] > w.distance[p]) {
+          // A shorter way to the root for q.
+          w.parent[q] = reverse[a];
+          w.distance[q] = w.distance[p] + 1;
+          w.stamp[q] = w.stamp[p];
+        }
+      }
+      if(bridge != none)
+        break; // p stays active
+      w.active_flag[p] = 0;
+      ++active_head;
+    }
+    if(bridge != none && active_head > 4096 && 2 * active_head > w.active.size()) {
+      w.active.erase(w.active.begin(), w.active.begin() + std::ptrdiff_t(active_head));
+      active_head = 0;
+    }
+    return bridge;
+  }
+
+  // Augmentation along source ... x -> y ... sink through the arc `bridge` (x -> y): pushes the
+  // bottleneck capacity of the path, returned; the nodes cut off from their parent become orphans.
+  double augment(Index bridge, Workspace& w) const
+  {
+    const std::vector<Index>& target = *m_target;
+    const std::vector<Index>& reverse = *m_reverse;
+    const Index x = target[reverse[bridge]], y = target[bridge];
+    double bottleneck = w.residual[bridge];
+    for(Index v = x; w.parent[v] != terminal; v = target[w.parent[v]])
+      bottleneck = (std::min)(bottleneck, w.residual[reverse[w.parent[v]]]);
+    for(Index v = y; w.parent[v] != terminal; v = target[w.parent[v]])
+      bottleneck = (std::min)(bottleneck, w.residual[w.parent[v]]);
+    w.residual[bridge] -= bottleneck;
+    w.residual[reverse[bridge]] += bottleneck;
+    for(Index v = x; w.parent[v] != terminal;) {
+      const Index up = w.parent[v]; // v -> parent; the flow goes parent -> v
+      const Index next = target[up];
+      w.residual[reverse[up]] -= bottleneck;
+      w.residual[up] += bottleneck;
+      if(!(w.residual[reverse[up]] > 0)) {
+        w.parent[v] = orphan;
+        w.orphans.push_back(v);
+      }
+      v = next;
+    }
+    for(Index v = y; w.parent[v] != terminal;) {
+      const Index up = w.parent[v]; // the flow goes v -> parent
+      const Index next = target[up];
+      w.residual[up] -= bottleneck;
+      w.residual[reverse[up]] += bottleneck;
+      if(!(w.residual[up] > 0)) {
+        w.parent[v] = orphan;
+        w.orphans.push_back(v);
+      }
+      v = next;
+    }
+    return bottleneck;
   }
 
   static constexpr Index none = ~Index(0);
   static constexpr Index terminal = ~Index(0) - 1;
   static constexpr Index orphan = ~Index(0) - 2;
 
-  template <typename Activate>
-  void adopt(Index v, Index time, Workspace& w, const Activate& activate) const
+  void adopt(Index v, Index time, Workspace& w) const
   {
     const std::vector<std::size_t>& first = *m_first;
     const std::vector<Index>& target = *m_target;
@@ -262,7 +277,7 @@ private:
       if(w.tree[q] != tree)
         continue;
       if(w.residual[in_source ? reverse[a] : a] > 0)
-        activate(q);
+        activate(q, w);
       const Index up = w.parent[q];
       if(up != terminal && up != orphan && up != none && target[up] == v) {
         w.parent[q] = orphan;

@@ -17,7 +17,7 @@
 //      ranked best first, and the support of each (per face: how closely the mirror image of the
 //      face lies on the surface).
 
-#include <CGAL/Surface_mesh_symmetrization/internal/Symmetry_geometry.h>
+#include <CGAL/Surface_mesh_symmetrization/internal/Surface_index.h>
 
 #include <algorithm>
 #include <array>
@@ -78,6 +78,123 @@ inline bool same_plane(const Plane_3d& a, const Plane_3d& b, double angle, doubl
 {
   return same_plane_cos(a, b, std::cos(angle), offset);
 }
+
+// The pair votes binned by (cube-map face, u, v, offset): 24 x 24 bins per face of the cube of
+// the normals, offsets in bins of `offset_bin`.
+class Vote_bins
+{
+public:
+  typedef std::array<int, 4> Key;
+  static constexpr int resolution = 24;
+
+  Vote_bins(const std::vector<Plane_3d>& votes, double offset_bin) : m_votes(votes), m_offset_bin(offset_bin)
+  {
+    // Votes sorted by bin; the bins as runs of that order.
+    m_keyed.resize(votes.size());
+    for(std::size_t i = 0; i < votes.size(); ++i)
+      m_keyed[i] = std::make_pair(key_of(votes[i]), std::uint32_t(i));
+    std::sort(m_keyed.begin(), m_keyed.end());
+    for(const auto& k : m_keyed) {
+      if(m_bins.empty() || m_bins.back().first != k.first)
+        m_bins.emplace_back(k.first, 0);
+      ++m_bins.back().second;
+    }
+  }
+
+  // The bins with the sums of the counts of their 3x3x3 neighbours, by decreasing sum.
+  std::vector<std::pair<std::size_t, Key>> smoothed() const
+  {
+    std::vector<std::pair<std::size_t, Key>> smoothed;
+    smoothed.reserve(m_bins.size());
+    for(const auto& b : m_bins) {
+      std::size_t sum = 0;
+      for(int du = -1; du <= 1; ++du)
+        for(int dv = -1; dv <= 1; ++dv)
+          for(int dd = -1; dd <= 1; ++dd)
+            sum += count_of(Key{{b.first[0], b.first[1] + du, b.first[2] + dv, b.first[3] + dd}});
+      smoothed.emplace_back(sum, b.first);
+    }
+    std::sort(smoothed.begin(), smoothed.end(), [](const auto& x, const auto& y) {
+      return x.first > y.first || (x.first == y.first && x.second < y.second);
+    });
+    return smoothed;
+  }
+
+  // The centre plane of bin k moved to the mean of the votes around it (within `cos_angle` and
+  // `offset`, in the 5x5x5 bins around k), 3 steps; `count`: the votes of the last mean.
+  Plane_3d mean_shift(const Key& k, double cos_angle, double offset, std::size_t& count) const
+  {
+    Vector_3d n;
+    n[k[0]] = 1;
+    n[(k[0] + 1) % 3] = (k[1] + 0.5) / resolution * 2 - 1;
+    n[(k[0] + 2) % 3] = (k[2] + 0.5) / resolution * 2 - 1;
+    n = n / n.length();
+    Plane_3d p{n, (k[3] + 0.5) * m_offset_bin};
+    count = 0;
+    for(int step = 0; step < 3; ++step) {
+      Vector_3d sum_n;
+      double sum_d = 0;
+      count = 0;
+      for(int du = -2; du <= 2; ++du)
+        for(int dv = -2; dv <= 2; ++dv) {
+          const auto range = votes_in(k[0], k[1] + du, k[2] + dv, k[3] - 2, k[3] + 2);
+          for(auto it = range.first; it != range.second; ++it) {
+            const Plane_3d& v = m_votes[it->second];
+            if(!same_plane_cos(p, v, cos_angle, offset))
+              continue;
+            const Plane_3d a = SAI::dot(p.normal, v.normal) < 0 ? v.opposite() : v;
+            sum_n += a.normal;
+            sum_d += a.offset;
+            ++count;
+          }
+        }
+      if(count == 0 || !(sum_n.length() > 0))
+        break;
+      p = Plane_3d{sum_n / sum_n.length(), sum_d / double(count)};
+    }
+    return p;
+  }
+
+private:
+  Key key_of(const Plane_3d& p) const
+  {
+    int a = 0;
+    for(int i = 1; i < 3; ++i)
+      if(std::abs(p.normal[i]) > std::abs(p.normal[a]))
+        a = i;
+    const double big = std::abs(p.normal[a]);
+    const double u = p.normal[(a + 1) % 3] / big, v = p.normal[(a + 2) % 3] / big; // in [-1, 1]
+    const int iu = (std::min)(resolution - 1, int(std::floor((u + 1) * 0.5 * resolution)));
+    const int iv = (std::min)(resolution - 1, int(std::floor((v + 1) * 0.5 * resolution)));
+    const int id = int(std::floor(p.offset / m_offset_bin));
+    return Key{{a, iu, iv, id}};
+  }
+
+  std::size_t count_of(const Key& k) const
+  {
+    const auto it = std::lower_bound(m_bins.begin(), m_bins.end(), k,
+                                     [](const std::pair<Key, std::size_t>& b, const Key& key) { return b.first < key; });
+    return (it != m_bins.end() && it->first == k) ? it->second : 0;
+  }
+
+  typedef std::vector<std::pair<Key, std::uint32_t>>::const_iterator Keyed_iterator;
+
+  // The votes of bins (a, u, v, d0..d1), a run of the sorted order.
+  std::pair<Keyed_iterator, Keyed_iterator> votes_in(int a, int u, int v, int d0, int d1) const
+  {
+    const Key lo{{a, u, v, d0}}, hi{{a, u, v, d1}};
+    const auto first = std::lower_bound(m_keyed.begin(), m_keyed.end(), lo,
+                                        [](const std::pair<Key, std::uint32_t>& x, const Key& key) { return x.first < key; });
+    const auto last = std::upper_bound(m_keyed.begin(), m_keyed.end(), hi,
+                                       [](const Key& key, const std::pair<Key, std::uint32_t>& x) { return key < x.first; });
+    return std::make_pair(first, last);
+  }
+
+  const std::vector<Plane_3d>& m_votes;
+  double m_offset_bin;
+  std::vector<std::pair<Key, std::uint32_t>> m_keyed;
+  std::vector<std::pair<Key, std::size_t>> m_bins; // (key, count)
+};
 
 // The surface samples refine and score the planes; all coordinates are relative to the area
 // centroid (the caller shifts them), so that offsets stay small.
@@ -267,94 +384,14 @@ private:
     std::vector<std::pair<Plane_3d, std::size_t>> peaks;
     if(all.empty())
       return peaks;
-    const int resolution = 24;
-    const double offset_bin = 0.02 * m_diagonal;
-    typedef std::array<int, 4> Key;
-    const auto key_of = [&](const Plane_3d& p) {
-      int a = 0;
-      for(int i = 1; i < 3; ++i)
-        if(std::abs(p.normal[i]) > std::abs(p.normal[a]))
-          a = i;
-      const double big = std::abs(p.normal[a]);
-      const double u = p.normal[(a + 1) % 3] / big, v = p.normal[(a + 2) % 3] / big; // in [-1, 1]
-      const int iu = (std::min)(resolution - 1, int(std::floor((u + 1) * 0.5 * resolution)));
-      const int iv = (std::min)(resolution - 1, int(std::floor((v + 1) * 0.5 * resolution)));
-      const int id = int(std::floor(p.offset / offset_bin));
-      return Key{{a, iu, iv, id}};
-    };
-    // Votes sorted by bin; the bins as runs of that order.
-    std::vector<std::pair<Key, std::uint32_t>> keyed(all.size());
-    for(std::size_t i = 0; i < all.size(); ++i)
-      keyed[i] = std::make_pair(key_of(all[i]), std::uint32_t(i));
-    std::sort(keyed.begin(), keyed.end());
-    std::vector<std::pair<Key, std::size_t>> bins; // (key, count)
-    for(const auto& k : keyed) {
-      if(bins.empty() || bins.back().first != k.first)
-        bins.emplace_back(k.first, 0);
-      ++bins.back().second;
-    }
-    const auto count_of = [&](const Key& k) -> std::size_t {
-      const auto it = std::lower_bound(bins.begin(), bins.end(), k,
-                                       [](const std::pair<Key, std::size_t>& b, const Key& key) { return b.first < key; });
-      return (it != bins.end() && it->first == k) ? it->second : 0;
-    };
-    // The votes of bins (a, u, v, d0..d1), a run of the sorted order.
-    const auto votes_in = [&](int a, int u, int v, int d0, int d1) {
-      const Key lo{{a, u, v, d0}}, hi{{a, u, v, d1}};
-      const auto first = std::lower_bound(keyed.begin(), keyed.end(), lo,
-                                          [](const std::pair<Key, std::uint32_t>& x, const Key& key) { return x.first < key; });
-      const auto last = std::upper_bound(keyed.begin(), keyed.end(), hi,
-                                         [](const Key& key, const std::pair<Key, std::uint32_t>& x) { return key < x.first; });
-      return std::make_pair(first, last);
-    };
-    std::vector<std::pair<std::size_t, Key>> smoothed;
-    smoothed.reserve(bins.size());
-    for(const auto& b : bins) {
-      std::size_t sum = 0;
-      for(int du = -1; du <= 1; ++du)
-        for(int dv = -1; dv <= 1; ++dv)
-          for(int dd = -1; dd <= 1; ++dd)
-            sum += count_of(Key{{b.first[0], b.first[1] + du, b.first[2] + dv, b.first[3] + dd}});
-      smoothed.emplace_back(sum, b.first);
-    }
-    std::sort(smoothed.begin(), smoothed.end(), [](const auto& x, const auto& y) {
-      return x.first > y.first || (x.first == y.first && x.second < y.second);
-    });
+    const Vote_bins bins(all, 0.02 * m_diagonal);
     const double angle = 6.0 * 3.14159265358979323846 / 180.0, offset = 0.03 * m_diagonal;
     const double cos_angle = std::cos(angle);
-    for(const auto& s : smoothed) {
+    for(const auto& s : bins.smoothed()) {
       if(peaks.size() >= 16 || s.first < 4)
         break;
-      // The bin's centre plane.
-      const Key& k = s.second;
-      Vector_3d n;
-      n[k[0]] = 1;
-      n[(k[0] + 1) % 3] = (k[1] + 0.5) / resolution * 2 - 1;
-      n[(k[0] + 2) % 3] = (k[2] + 0.5) / resolution * 2 - 1;
-      n = n / n.length();
-      Plane_3d p{n, (k[3] + 0.5) * offset_bin};
       std::size_t count = 0;
-      for(int step = 0; step < 3; ++step) {
-        Vector_3d sum_n;
-        double sum_d = 0;
-        count = 0;
-        for(int du = -2; du <= 2; ++du)
-          for(int dv = -2; dv <= 2; ++dv) {
-            const auto range = votes_in(k[0], k[1] + du, k[2] + dv, k[3] - 2, k[3] + 2);
-            for(auto it = range.first; it != range.second; ++it) {
-              const Plane_3d& v = all[it->second];
-              if(!same_plane_cos(p, v, cos_angle, offset))
-                continue;
-              const Plane_3d a = SAI::dot(p.normal, v.normal) < 0 ? v.opposite() : v;
-              sum_n += a.normal;
-              sum_d += a.offset;
-              ++count;
-            }
-          }
-        if(count == 0 || !(sum_n.length() > 0))
-          break;
-        p = Plane_3d{sum_n / sum_n.length(), sum_d / double(count)};
-      }
+      const Plane_3d p = bins.mean_shift(s.second, cos_angle, offset, count);
       if(count < 4)
         continue;
       bool near = false;

@@ -40,19 +40,10 @@
 //     steps that trade the symmetry error against the relative change of the edge lengths, all
 //     three coordinates free (refine_step()), the weight of the error growing per step.
 
-#include <CGAL/Surface_mesh_symmetrization/internal/Symmetry_geometry.h>
-
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/Euler_operations.h>
-#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
-#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
-#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Edge_length_cost.h>
-#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Midpoint_placement.h>
-
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
+#include <CGAL/Surface_mesh_symmetrization/internal/Isometric_refinement.h>
+#include <CGAL/Surface_mesh_symmetrization/internal/Mirror_points.h>
+#include <CGAL/Surface_mesh_symmetrization/internal/Symmetrization_levels.h>
+#include <CGAL/Surface_mesh_symmetrization/internal/Symmetrization_step.h>
 
 #include <algorithm>
 #include <array>
@@ -102,15 +93,6 @@ struct Symmetrization_options
   std::function<void(double)> progress;
 };
 
-// The mirror point of a vertex for one symmetry.
-struct Mirror
-{
-  std::uint32_t face = 0;
-  std::array<double, 3> barycentric{{1, 0, 0}};
-  double distance = 0; // from T^-1(x_i) to the mirror point
-  bool found = false;
-};
-
 struct Iteration_record
 {
   std::size_t level = 0; // 0: the finest
@@ -131,73 +113,6 @@ struct Symmetrization_output
 
 // ---------------------------------------------------------------------------------------------
 
-// The weighted RMS of the mirror distances of `mirrors` (weights: per symmetry and vertex, empty
-// for 1), over the vertices that have a mirror point (a vertex without faces has none).
-inline double rms_mirror_distance(const std::vector<std::vector<Mirror>>& mirrors,
-                                  const std::vector<std::vector<double>>& weights)
-{
-  double sum = 0, w_sum = 0;
-  for(std::size_t k = 0; k < mirrors.size(); ++k)
-    for(std::size_t i = 0; i < mirrors[k].size(); ++i) {
-      const double w = weights[k].empty() ? 1.0 : weights[k][i];
-      if(!mirrors[k][i].found || !(w > 0))
-        continue;
-      sum += w * mirrors[k][i].distance * mirrors[k][i].distance;
-      w_sum += w;
-    }
-  return w_sum > 0 ? std::sqrt(sum / w_sum) : 0.0;
-}
-
-// Mirror points of every vertex of `s` for every symmetry; `exact`: closest points through the
-// closest-point hierarchy (otherwise the faster local search, exact on smooth regions). `hints`:
-// mirror points of nearby positions (the previous step's), which speed the exact search up.
-inline std::vector<std::vector<Mirror>>
-mirror_points(const Surface& s, const Surface_index& index, const std::vector<Affine_3d>& inverses,
-              bool exact, std::size_t threads, const std::vector<std::vector<Mirror>>* hints = nullptr)
-{
-  const std::size_t n = s.number_of_vertices();
-  const std::vector<Vector_3d> normals = s.vertex_normals();
-  std::vector<std::vector<Mirror>> result(inverses.size(), std::vector<Mirror>(n));
-  SAI::Parallel_workspaces<std::vector<std::pair<double, std::uint32_t>>> parallel(threads);
-  const std::size_t block = 512;
-  // Nearby vertices one after the other when `s` is the surface of the index.
-  const bool ordered = index.vertex_order().size() == n;
-  for(std::size_t k = 0; k < inverses.size(); ++k) {
-    const Affine_3d& inv = inverses[k];
-    const Matrix_3d nm = inv.normal_matrix();
-    parallel.for_each(0, (n + block - 1) / block, [&](std::size_t b, std::vector<std::pair<double, std::uint32_t>>& buffer) {
-      for(std::size_t o = b * block; o < (std::min)(n, (b + 1) * block); ++o) {
-        const std::size_t i = ordered ? index.vertex_order()[o] : o;
-        if(!(normals[i].squared_length() > 0))
-          continue; // no face: no mirror point
-        const Vector_3d q = inv(s.points[i]);
-        const Vector_3d m = inv.transform_normal(normals[i], nm);
-        const std::uint32_t hint = hints != nullptr && (*hints)[k][i].found ? (*hints)[k][i].face : Surface_index::no_face;
-        const Surface_point c = exact ? index.closest_compatible(q, m, 0.0, hint)
-                                      : index.approximate_closest_compatible(q, m, 0.0,
-                                                                             std::numeric_limits<double>::infinity(), buffer);
-        Mirror& r = result[k][i];
-        if(!c.found)
-          continue;
-        r.found = true;
-        r.face = c.face;
-        r.barycentric = c.barycentric;
-        r.distance = std::sqrt(c.squared_distance);
-      }
-    });
-  }
-  return result;
-}
-
-// The exact mirror points of every vertex of `s` (a closest-point tree built for it).
-inline std::vector<std::vector<Mirror>> exact_mirror_points(const Surface& s, const std::vector<Affine_3d>& inverses,
-                                                            std::size_t threads,
-                                                            const std::vector<std::vector<Mirror>>* hints = nullptr)
-{
-  const Surface_index index(s);
-  return mirror_points(s, index, inverses, true, threads, hints);
-}
-
 // RMS relative change of the edge lengths between `x0` and `x` (edges of positive length).
 inline double edge_distortion(const Surface& s, const std::vector<Vector_3d>& x0,
                               const std::vector<Vector_3d>& x)
@@ -215,133 +130,15 @@ inline double edge_distortion(const Surface& s, const std::vector<Vector_3d>& x0
   return count > 0 ? std::sqrt(sum / double(count)) : 0.0;
 }
 
-// The naive baseline of the benchmarks: every vertex moved halfway to the image, under `t`, of
-// its mirror point (the closest compatible surface point to t^-1(x_i)); vertices without one stay.
-inline std::vector<Vector_3d> naive_symmetrization(const Surface& s, const Affine_3d& t,
-                                                   std::size_t threads)
-{
-  const auto mirrors = exact_mirror_points(s, {t.inverse()}, threads);
-  std::vector<Vector_3d> x = s.points;
-  for(std::size_t i = 0; i < x.size(); ++i) {
-    const Mirror& m = mirrors[0][i];
-    if(!m.found)
-      continue;
-    const auto c = s.corners(m.face);
-    const Vector_3d p = c[0] * m.barycentric[0] + c[1] * m.barycentric[1] + c[2] * m.barycentric[2];
-    x[i] = (s.points[i] + t(p)) * 0.5;
-  }
-  return x;
-}
-
-// The RMS symmetry error of positions `x` (connectivity of `s`) under `t`, relative to the
-// diagonal of `s`, with exact closest points.
-inline double symmetry_error(const Surface& s, const std::vector<Vector_3d>& x, const Affine_3d& t,
-                             std::size_t threads)
-{
-  const auto mirrors = exact_mirror_points(Surface{x, s.triangles}, {t.inverse()}, threads);
-  return rms_mirror_distance(mirrors, {std::vector<double>()}) / s.diagonal();
-}
-
-// RMS relative change of the edge vectors between `x0` and `x`: |(x_i - x_j) - (x0_i - x0_j)|
-// over |x0_i - x0_j| (edges of positive length). It counts stretching and bending alike.
-inline double edge_vector_distortion(const Surface& s, const std::vector<Vector_3d>& x0,
-                                     const std::vector<Vector_3d>& x)
-{
-  double sum = 0;
-  std::size_t count = 0;
-  for(const auto& e : s.edges()) {
-    const Vector_3d d0 = x0[e.first] - x0[e.second];
-    const double l0 = d0.length();
-    if(!(l0 > 0))
-      continue;
-    const double d = ((x[e.first] - x[e.second]) - d0).length() / l0;
-    sum += d * d;
-    ++count;
-  }
-  return count > 0 ? std::sqrt(sum / double(count)) : 0.0;
-}
-
-// ---------------------------------------------------------------------------------------------
-// One level of the multiresolution hierarchy.
-
-struct Level
-{
-  Surface original;                       // positions x0 at this level
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
-  double mean_edge = 0;
-  // Per vertex of the next finer level: its closest point on this level's original surface.
-  std::vector<Surface_point> finer_on_this;
-  std::vector<std::vector<double>> weights; // [symmetry][vertex] (empty: 1)
-  // Per face, the faces across its three edges (no_face at a border or a non-manifold edge);
-  // built on first use.
-  mutable std::vector<std::array<std::uint32_t, 3>> adjacent;
-  // The closest-point index of the current positions of this level, refitted as they move.
-  mutable std::unique_ptr<Surface_index> index;
-};
-
-// Decimates `s` with CGAL's edge collapse (edge-length cost, midpoint placement) to about
-// `target` vertices. Returns false when the surface cannot be built as a halfedge mesh or does
-// not get smaller.
-inline bool decimate(const Surface& s, std::size_t target, Surface& result)
-{
-  typedef CGAL::Simple_cartesian<double> K;
-  typedef CGAL::Surface_mesh<K::Point_3> Mesh;
-  namespace SMS = CGAL::Surface_mesh_simplification;
-  Mesh mesh;
-  std::vector<std::uint32_t> used(s.points.size(), 0);
-  for(const auto& t : s.triangles)
-    for(std::uint32_t v : t)
-      used[v] = 1;
-  std::vector<Mesh::Vertex_index> vertex(s.points.size());
-  for(std::size_t i = 0; i < s.points.size(); ++i)
-    if(used[i])
-      vertex[i] = mesh.add_vertex(K::Point_3(s.points[i].x, s.points[i].y, s.points[i].z));
-  std::vector<Mesh::Vertex_index> corners(3);
-  for(const auto& t : s.triangles) {
-    for(int c = 0; c < 3; ++c)
-      corners[std::size_t(c)] = vertex[t[std::size_t(c)]];
-    if(CGAL::Euler::add_face(corners, mesh) == Mesh::null_face())
-      return false; // a face that a halfedge mesh cannot hold: no coarser level
-  }
-  const std::size_t before = num_vertices(mesh);
-  if(before <= target)
-    return false;
-  SMS::Count_stop_predicate<Mesh> stop(3 * target);
-  SMS::edge_collapse(mesh, stop,
-                     CGAL::parameters::get_cost(SMS::Edge_length_cost<Mesh>())
-                       .get_placement(SMS::Midpoint_placement<Mesh>()));
-  mesh.collect_garbage();
-  if(num_vertices(mesh) >= before || num_faces(mesh) == 0)
-    return false;
-  result = Surface();
-  result.points.reserve(num_vertices(mesh));
-  for(Mesh::Vertex_index v : mesh.vertices()) {
-    const K::Point_3& p = mesh.point(v);
-    result.points.emplace_back(p.x(), p.y(), p.z());
-  }
-  for(Mesh::Face_index f : mesh.faces()) {
-    std::array<std::uint32_t, 3> t{{0, 0, 0}};
-    int c = 0;
-    for(Mesh::Vertex_index v : vertices_around_face(mesh.halfedge(f), mesh))
-      t[std::size_t(c++)] = std::uint32_t(v.idx());
-    result.triangles.push_back(t);
-  }
-  return true;
-}
-
 // ---------------------------------------------------------------------------------------------
 // The solver.
 
 class Symmetrizer
 {
 public:
-  typedef Eigen::SparseMatrix<double> Sparse;
-  typedef Eigen::SimplicialLDLT<Sparse> LDLT;
-  typedef Eigen::Triplet<double> Triplet;
-
   Symmetrizer(const Surface& input, const std::vector<Solver_symmetry>& symmetries,
               const Symmetrization_options& o)
-    : m_input(input), m_o(o)
+    : m_input(input), m_o(o), m_step(o.direct_solver_limit)
   {
     for(const Solver_symmetry& s : symmetries) {
       m_transforms.push_back(s.transform);
@@ -367,66 +164,10 @@ public:
         m_error_before = rms_mirror_distance(m_input_mirrors, finest_weights) / m_diagonal;
         return;
       }
-      const std::size_t max_levels = o.number_of_levels == 0 ? 8 : o.number_of_levels;
-      while(m_levels.size() < max_levels) {
-        const Surface& fine = m_levels.back().original;
-        std::size_t used = 0;
-        {
-          std::vector<char> u(fine.points.size(), 0);
-          for(const auto& t : fine.triangles)
-            for(std::uint32_t v : t)
-              u[v] = 1;
-          for(char c : u)
-            used += c ? 1 : 0;
-        }
-        const std::size_t target = used / 8;
-        if(o.number_of_levels == 0 && target < o.coarsest_level_size / 2)
-          break;
-        if(target < 20)
-          break;
-        Level coarse;
-        if(!decimate(fine, target, coarse.original))
-          break;
-        m_levels.push_back(std::move(coarse));
-      }
+      add_coarser_levels(m_levels, o.number_of_levels, o.coarsest_level_size);
     });
     m_levels.front().index = std::move(input_index);
-    // Links between levels and the weights of coarser levels (the weight of the closest point).
-    for(std::size_t l = 1; l < m_levels.size(); ++l) {
-      const Surface& fine = m_levels[l - 1].original;
-      Level& coarse = m_levels[l];
-      const Surface_index coarse_index(coarse.original);
-      coarse.finer_on_this.resize(fine.number_of_vertices());
-      SAI::Parallel_workspaces<char> parallel(o.number_of_threads);
-      parallel.for_each(0, fine.number_of_vertices(), [&](std::size_t i, char&) {
-        coarse.finer_on_this[i] = coarse_index.closest(fine.points[i]);
-      });
-      std::unique_ptr<Surface_index> fine_index; // made when a symmetry has weights
-      coarse.weights.resize(symmetries.size());
-      for(std::size_t k = 0; k < symmetries.size(); ++k) {
-        const std::vector<double>& wf = m_levels[l - 1].weights[k];
-        if(wf.empty())
-          continue;
-        if(!fine_index)
-          fine_index = std::make_unique<Surface_index>(fine);
-        std::vector<double>& wc = coarse.weights[k];
-        wc.assign(coarse.original.number_of_vertices(), 0.0);
-        for(std::size_t i = 0; i < wc.size(); ++i) {
-          const Surface_point c = fine_index->closest(coarse.original.points[i]);
-          if(!c.found)
-            continue;
-          const auto& t = fine.triangles[c.face];
-          wc[i] = c.barycentric[0] * wf[t[0]] + c.barycentric[1] * wf[t[1]] + c.barycentric[2] * wf[t[2]];
-        }
-      }
-    }
-    for(Level& level : m_levels) {
-      level.edges = level.original.edges();
-      double sum = 0;
-      for(const auto& e : level.edges)
-        sum += (level.original.points[e.first] - level.original.points[e.second]).length();
-      level.mean_edge = level.edges.empty() ? 0.0 : sum / double(level.edges.size());
-    }
+    link_levels(m_levels, symmetries.size(), o.number_of_threads);
   }
 
   Symmetrization_output run()
@@ -436,176 +177,208 @@ public:
       out.level_sizes.push_back(l.original.number_of_vertices());
     out.error_before = m_error_before;
     // Work counted for progress: vertices times steps.
-    double total_work = 0, done_work = 0;
+    m_total_work = m_done_work = 0;
     const std::size_t L = m_levels.size();
     for(std::size_t l = 0; l < L; ++l)
-      total_work += double(m_levels[l].original.number_of_vertices()) *
-                    double(schedule(l).size() + m_o.projection_iterations / 2);
+      m_total_work += double(m_levels[l].original.number_of_vertices()) *
+                      double(schedule(l).size() + m_o.projection_iterations / 2);
     std::vector<Vector_3d> x; // positions of the current level
     for(std::size_t step = 0; step < L; ++step) {
       const std::size_t l = L - 1 - step;
-      Level& level = m_levels[l];
-      if(step == 0) {
-        x = level.original.points;
-      } else {
-        // Seed from the coarser level's displacements.
-        const Level& coarse = m_levels[l + 1];
-        std::vector<Vector_3d> seeded = level.original.points;
-        for(std::size_t i = 0; i < seeded.size(); ++i) {
-          const Surface_point& c = coarse.finer_on_this[i];
-          if(!c.found)
-            continue;
-          const auto& t = coarse.original.triangles[c.face];
-          Vector_3d d;
-          for(int j = 0; j < 3; ++j)
-            d += (x[t[std::size_t(j)]] - coarse.original.points[t[std::size_t(j)]]) * c.barycentric[std::size_t(j)];
-          seeded[i] += d;
-        }
-        x.swap(seeded);
-      }
-      const std::vector<double> alphas = schedule(l);
-      // The steps of the schedule, then constrained steps until the error is below the
-      // tolerance, stops decreasing by 5%, or `projection_iterations` were made; the positions of
-      // the smallest error from the last step of the schedule on are kept.
-      std::size_t projections = 0, total_projections = 0, extra_steps = 0;
-      std::vector<Vector_3d> best_x;
-      double best_error = std::numeric_limits<double>::infinity();
-      bool last_tracked = false; // the error of the current positions is that of tracked mirrors
-      double previous_constrained = std::numeric_limits<double>::infinity();
-      double previous_exact = std::numeric_limits<double>::infinity(); // the error of the last exact search
-      bool previous_tracked = false;
-      double previous_error = std::numeric_limits<double>::infinity();
-      // Finest level of a mesh too large for the refinement: growing constrained weights.
-      const bool escalate = l == 0 && !refinable(level) && m_o.target_error > 0 &&
-                            m_o.maximum_constrained_ratio > m_o.constrained_ratio;
-      // It starts from the schedule's last weight: a smaller one would undo the last steps.
-      m_constrained_ratio = escalate ? (std::max)(m_o.constrained_ratio, std::pow(10.0, m_o.schedule_exponent))
-                                     : m_o.constrained_ratio;
-      // On the finest level, the input's mirror points are the first hints.
-      std::vector<std::vector<Mirror>> mirrors;
-      if(l == 0)
-        mirrors.swap(m_input_mirrors);
-      for(std::size_t s = 0;; ++s) {
-        const bool constrained = s + 1 >= alphas.size();
-        const bool coarsest = l > 0 && l + 1 == L;
-        // Coarser levels only take the steps of the schedule: their constrained steps would fit
-        // their own (coarse) triangles to each other, and seed the finer level with that. The
-        // coarsest one takes further steps at the schedule's last weight while they gain 5%: the
-        // large-scale asymmetry is cheapest to remove there.
-        if(constrained && l > 0) {
-          double e = 0;
-          if(s > 0) {
-            mirrors = exact_mirrors(level, x, &mirrors);
-            e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
-            out.iterations.back().symmetry_error = e;
-            if(e < best_error) {
-              best_error = e;
-              best_x = x;
-            }
-          }
-          if(!coarsest || s < 2 || extra_steps >= m_o.coarsest_extra_steps || !(e < m_o.stall_ratio * previous_error))
-            break;
-          previous_error = e;
-          ++extra_steps;
-          solve(level, mirrors, alphas[alphas.size() - 2], false, x);
-          out.iterations.push_back(Iteration_record{l, alphas[alphas.size() - 2], 0.0});
-          --s; // stay on this step
-          continue;
-        }
-        const double alpha = constrained ? 1.0 : alphas[s];
-        bool tracked = false;
-        if(escalate && projections > 0 && total_projections % 4 != 0) {
-          mirrors = track_mirrors(level, x, mirrors);
-          tracked = true;
-        } else {
-          // The input's own (the finest level not seeded: its positions are the input's).
-          if(!(s == 0 && step == 0 && l == 0 && mirrors.size() == m_inverses.size()))
-            mirrors = exact_mirrors(level, x, &mirrors);
-        }
-        if(s > 0) {
-          double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
-          bool rechecked = false;
-          // Tracked mirrors leave out the vertices that only an exact search finds one for, which
-          // are the farthest: their error is checked once it is well below the target.
-          if(tracked && e <= 0.75 * m_o.target_error) {
-            mirrors = exact_mirrors(level, x, &mirrors);
-            e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
-            rechecked = true;
-          }
-          out.iterations.back().symmetry_error = e;
-          // Kept: the positions of the smallest exact error from the last step of the schedule on
-          // (the errors of tracked mirrors leave some vertices out: not comparable).
-          last_tracked = tracked && !rechecked;
-          if(!last_tracked && e < best_error && s + 2 >= alphas.size()) {
-            best_error = e;
-            best_x = x;
-          }
-          if(projections > 0) {
-            // The first constrained step may pair vertices and raise the error for a step; after
-            // it, stop once a step gains less than 5%. Large meshes above the target: the weight
-            // grows tenfold once a step gains less than 10%.
-            // An exact search after tracked ones is not compared with them (they leave out the
-            // vertices that only it finds a mirror point for), but with the last exact one.
-            const double reference = rechecked ? std::numeric_limits<double>::infinity()
-                                   : (!tracked && previous_tracked) ? previous_exact : previous_constrained;
-            previous_tracked = tracked;
-            if(!tracked)
-              previous_exact = e;
-            const bool stalled = projections >= 2 && e > m_o.stall_ratio * reference;
-            const bool slow = projections >= 2 && e > 0.9 * reference;
-            previous_constrained = e;
-            if(escalate && e > m_o.target_error && total_projections < m_o.maximum_constrained_steps &&
-               (slow || projections >= m_o.projection_iterations) &&
-               m_constrained_ratio < m_o.maximum_constrained_ratio) {
-              m_constrained_ratio = (std::min)(m_o.maximum_constrained_ratio, m_constrained_ratio * 10);
-              projections = 1;
-              previous_constrained = std::numeric_limits<double>::infinity();
-              previous_exact = std::numeric_limits<double>::infinity();
-            } else if(e <= m_o.symmetry_tolerance || projections >= m_o.projection_iterations || stalled ||
-                      (escalate && (e <= m_o.target_error || total_projections >= m_o.maximum_constrained_steps)))
-              break;
-          }
-        }
-        solve(level, mirrors, alpha, constrained, x);
-        if(constrained) {
-          ++projections;
-          ++total_projections;
-        }
-        out.iterations.push_back(Iteration_record{l, alpha, 0.0});
-        done_work += double(level.original.number_of_vertices());
-        if(m_o.progress)
-          m_o.progress((std::min)(0.99, done_work / (std::max)(1.0, total_work)));
-      }
-      if(last_tracked) { // the last positions, exactly
-        mirrors = exact_mirrors(level, x, &mirrors);
-        const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
-        out.iterations.back().symmetry_error = e;
-        if(e < best_error) {
-          best_x.clear();
-          if(l == 0)
-            out.mirrors = mirrors;
-        }
-      }
-      if(!best_x.empty())
-        x.swap(best_x);
+      const Level& level = m_levels[l];
+      // Seeded from the coarser level's displacements.
+      x = step == 0 ? level.original.points : seeded_positions(level, m_levels[l + 1], x);
+      run_level(l, step > 0, x, out);
       if(l == 0 && refinable(level))
         refine(level, x, out);
-      else if(escalate && m_o.local_refinement_steps > 0)
+      else if(escalates(l) && m_o.local_refinement_steps > 0)
         refine_locally(level, x, out);
     }
     out.points = x;
-    {
-      if(out.mirrors.empty()) // refine() leaves those of the positions it kept
-        out.mirrors = exact_mirrors(m_levels.front(), x);
-      out.error_after = rms_mirror_distance(out.mirrors, m_levels.front().weights) / m_diagonal;
-      if(!out.iterations.empty())
-        out.iterations.back().symmetry_error = out.error_after;
-    }
+    if(out.mirrors.empty()) // refine() leaves those of the positions it kept
+      out.mirrors = exact_mirrors(m_levels.front(), x);
+    out.error_after = rms_mirror_distance(out.mirrors, m_levels.front().weights) / m_diagonal;
+    if(!out.iterations.empty())
+      out.iterations.back().symmetry_error = out.error_after;
     out.distortion = edge_distortion(m_input, m_input.points, x);
     return out;
   }
 
 private:
+  // The state of the steps of one level.
+  struct Level_steps
+  {
+    std::vector<double> alphas; // schedule()
+    bool escalate = false;      // escalates()
+    std::vector<std::vector<Mirror>> mirrors;
+    std::size_t projections = 0, total_projections = 0, extra_steps = 0;
+    // The positions of the smallest exact error from the last step of the schedule on.
+    std::vector<Vector_3d> best_x;
+    double best_error = std::numeric_limits<double>::infinity();
+    bool last_tracked = false; // the error of the current positions is that of tracked mirrors
+    double previous_constrained = std::numeric_limits<double>::infinity();
+    double previous_exact = std::numeric_limits<double>::infinity(); // the error of the last exact search
+    bool previous_tracked = false;
+    double previous_error = std::numeric_limits<double>::infinity();
+  };
+
+  // Whether level l is the finest level of a mesh too large for the refinement: it takes
+  // growing constrained weights.
+  bool escalates(std::size_t l) const
+  {
+    return l == 0 && !refinable(m_levels[l]) && m_o.target_error > 0 &&
+           m_o.maximum_constrained_ratio > m_o.constrained_ratio;
+  }
+
+  // The steps of the schedule on level l, then constrained steps until the error is below the
+  // tolerance, stops decreasing by 5%, or `projection_iterations` were made; the positions of
+  // the smallest error from the last step of the schedule on are kept. `seeded`: `x` comes from
+  // a coarser level (otherwise it is the input's).
+  void run_level(std::size_t l, bool seeded, std::vector<Vector_3d>& x, Symmetrization_output& out)
+  {
+    const Level& level = m_levels[l];
+    Level_steps r;
+    r.alphas = schedule(l);
+    r.escalate = escalates(l);
+    // It starts from the schedule's last weight: a smaller one would undo the last steps.
+    m_constrained_ratio = r.escalate ? (std::max)(m_o.constrained_ratio, std::pow(10.0, m_o.schedule_exponent))
+                                     : m_o.constrained_ratio;
+    // On the finest level, the input's mirror points are the first hints.
+    if(l == 0)
+      r.mirrors.swap(m_input_mirrors);
+    for(std::size_t s = 0;; ++s) {
+      const bool constrained = s + 1 >= r.alphas.size();
+      if(constrained && l > 0) {
+        if(!coarse_extra_step(l, s, x, out, r))
+          break;
+        --s; // stay on this step
+        continue;
+      }
+      const double alpha = constrained ? 1.0 : r.alphas[s];
+      // The input's own mirror points (the finest level not seeded: its positions are the input's).
+      const bool tracked = update_mirrors(level, s == 0 && !seeded && l == 0, x, r);
+      if(s > 0 && record_error(level, s, tracked, x, out, r))
+        break;
+      solve(level, r.mirrors, alpha, constrained, x);
+      if(constrained) {
+        ++r.projections;
+        ++r.total_projections;
+      }
+      out.iterations.push_back(Iteration_record{l, alpha, 0.0});
+      m_done_work += double(level.original.number_of_vertices());
+      if(m_o.progress)
+        m_o.progress((std::min)(0.99, m_done_work / (std::max)(1.0, m_total_work)));
+    }
+    if(r.last_tracked) { // the last positions, exactly
+      r.mirrors = exact_mirrors(level, x, &r.mirrors);
+      const double e = rms_mirror_distance(r.mirrors, level.weights) / m_diagonal;
+      out.iterations.back().symmetry_error = e;
+      if(e < r.best_error) {
+        r.best_x.clear();
+        if(l == 0)
+          out.mirrors = r.mirrors;
+      }
+    }
+    if(!r.best_x.empty())
+      x.swap(r.best_x);
+  }
+
+  // Coarser levels only take the steps of the schedule: their constrained steps would fit their
+  // own (coarse) triangles to each other, and seed the finer level with that. The coarsest one
+  // takes further steps at the schedule's last weight while they gain 5%: the large-scale
+  // asymmetry is cheapest to remove there. Returns whether it took one.
+  bool coarse_extra_step(std::size_t l, std::size_t s, std::vector<Vector_3d>& x, Symmetrization_output& out,
+                         Level_steps& r)
+  {
+    const Level& level = m_levels[l];
+    const bool coarsest = l + 1 == m_levels.size();
+    double e = 0;
+    if(s > 0) {
+      r.mirrors = exact_mirrors(level, x, &r.mirrors);
+      e = rms_mirror_distance(r.mirrors, level.weights) / m_diagonal;
+      out.iterations.back().symmetry_error = e;
+      if(e < r.best_error) {
+        r.best_error = e;
+        r.best_x = x;
+      }
+    }
+    if(!coarsest || s < 2 || r.extra_steps >= m_o.coarsest_extra_steps || !(e < m_o.stall_ratio * r.previous_error))
+      return false;
+    r.previous_error = e;
+    ++r.extra_steps;
+    const double alpha = r.alphas[r.alphas.size() - 2];
+    solve(level, r.mirrors, alpha, false, x);
+    out.iterations.push_back(Iteration_record{l, alpha, 0.0});
+    return true;
+  }
+
+  // The mirror points of positions `x` for the next step: tracked from the previous ones between
+  // the exact searches (every fourth step) of escalating constrained steps (returns true), exact
+  // otherwise; `input`: `x` is the input, whose mirror points are known.
+  bool update_mirrors(const Level& level, bool input, const std::vector<Vector_3d>& x, Level_steps& r) const
+  {
+    if(r.escalate && r.projections > 0 && r.total_projections % 4 != 0) {
+      r.mirrors = track_mirrors(Surface{x, level.original.triangles}, face_adjacency(level), m_inverses, r.mirrors,
+                                m_o.number_of_threads);
+      return true;
+    }
+    if(!(input && r.mirrors.size() == m_inverses.size()))
+      r.mirrors = exact_mirrors(level, x, &r.mirrors);
+    return false;
+  }
+
+  // Records the error of the positions `x` reached by step s - 1 and keeps the best positions;
+  // returns whether the constrained steps stop.
+  bool record_error(const Level& level, std::size_t s, bool tracked, const std::vector<Vector_3d>& x,
+                    Symmetrization_output& out, Level_steps& r)
+  {
+    double e = rms_mirror_distance(r.mirrors, level.weights) / m_diagonal;
+    bool rechecked = false;
+    // Tracked mirrors leave out the vertices that only an exact search finds one for, which
+    // are the farthest: their error is checked once it is well below the target.
+    if(tracked && e <= 0.75 * m_o.target_error) {
+      r.mirrors = exact_mirrors(level, x, &r.mirrors);
+      e = rms_mirror_distance(r.mirrors, level.weights) / m_diagonal;
+      rechecked = true;
+    }
+    out.iterations.back().symmetry_error = e;
+    // Kept: the positions of the smallest exact error from the last step of the schedule on
+    // (the errors of tracked mirrors leave some vertices out: not comparable).
+    r.last_tracked = tracked && !rechecked;
+    if(!r.last_tracked && e < r.best_error && s + 2 >= r.alphas.size()) {
+      r.best_error = e;
+      r.best_x = x;
+    }
+    return r.projections > 0 && constrained_steps_stop(e, tracked, rechecked, r);
+  }
+
+  // The first constrained step may pair vertices and raise the error for a step; after it, the
+  // steps stop once one gains less than 5%. Large meshes above the target: the weight grows
+  // tenfold once a step gains less than 10%. An exact search after tracked ones is not compared
+  // with them (they leave out the vertices that only it finds a mirror point for), but with the
+  // last exact one.
+  bool constrained_steps_stop(double e, bool tracked, bool rechecked, Level_steps& r)
+  {
+    const double reference = rechecked ? std::numeric_limits<double>::infinity()
+                           : (!tracked && r.previous_tracked) ? r.previous_exact : r.previous_constrained;
+    r.previous_tracked = tracked;
+    if(!tracked)
+      r.previous_exact = e;
+    const bool stalled = r.projections >= 2 && e > m_o.stall_ratio * reference;
+    const bool slow = r.projections >= 2 && e > 0.9 * reference;
+    r.previous_constrained = e;
+    if(r.escalate && e > m_o.target_error && r.total_projections < m_o.maximum_constrained_steps &&
+       (slow || r.projections >= m_o.projection_iterations) && m_constrained_ratio < m_o.maximum_constrained_ratio) {
+      m_constrained_ratio = (std::min)(m_o.maximum_constrained_ratio, m_constrained_ratio * 10);
+      r.projections = 1;
+      r.previous_constrained = std::numeric_limits<double>::infinity();
+      r.previous_exact = std::numeric_limits<double>::infinity();
+      return false;
+    }
+    return e <= m_o.symmetry_tolerance || r.projections >= m_o.projection_iterations || stalled ||
+           (r.escalate && (e <= m_o.target_error || r.total_projections >= m_o.maximum_constrained_steps));
+  }
+
   // The alphas of the steps before the constrained ones: from 0 to 1 on the coarsest level; the
   // last two on finer levels (seeded). The last entry (1) marks the constrained steps.
   std::vector<double> schedule(std::size_t level) const
@@ -626,187 +399,21 @@ private:
     return a;
   }
 
-  // One solve with fixed targets: every vertex is drawn toward the midpoint q_i = (y_i + T(p_i)) / 2
-  // of its current position y_i and the image of its mirror point p_i (for every symmetry, with
-  // its weight), E_sym = 1/n sum w |x_i - q_i|^2. The coordinates decouple and share one matrix.
-  // `anchor_current`: the edge vectors are kept relative to the current positions (the constrained
-  // steps: at a fixed point the shape term vanishes and x_i = q_i, i.e. the mirror points lie on
-  // the surface); otherwise relative to the input.
+  // One step of the schedule at `alpha` (1: a constrained step, at the current constrained
+  // weight), with fixed targets (Step_solver::solve()).
   void solve(const Level& level, const std::vector<std::vector<Mirror>>& mirrors, double alpha,
              bool anchor_current, std::vector<Vector_3d>& x) const
   {
     const std::size_t n = level.original.number_of_vertices();
     const double D = m_diagonal;
-    const double h = m_levels.front().mean_edge > 0 ? m_levels.front().mean_edge : D;
-    const double rho = alpha >= 1 ? m_constrained_ratio : alpha / (1 - alpha);
-    const double a_sym = rho / double(n);
-    const double a_edge = m_o.shape_weight * (D * D) / (h * h) /
-                          double((std::max)(std::size_t(1), level.edges.size()));
-    const double a_disp = m_o.displacement_weight / double(n);
-    const std::vector<Vector_3d>& x0 = level.original.points;
-    const std::vector<Vector_3d> y = x;
-    std::vector<double> w(n, 0.0);
-    std::vector<Vector_3d> wq(n); // sum of weight * target
-    const bool snap = anchor_current;
-    for(std::size_t k = 0; k < mirrors.size(); ++k) {
-      // Mutual vertex pairs: the corner of the mirror face nearest to the mirror point of i is j,
-      // and that of j is i, both within a third of the mean edge length.
-      std::vector<std::uint32_t> nearest(n, Surface_index::no_face);
-      for(std::size_t i = 0; i < n; ++i) {
-        const Mirror& m = mirrors[k][i];
-        if(!m.found)
-          continue;
-        const auto& f = level.original.triangles[m.face];
-        const Vector_3d p = y[f[0]] * m.barycentric[0] + y[f[1]] * m.barycentric[1] + y[f[2]] * m.barycentric[2];
-        std::size_t best = 0;
-        double best_d = std::numeric_limits<double>::infinity();
-        for(std::size_t c = 0; c < 3; ++c) {
-          const double d = (y[f[c]] - p).squared_length();
-          if(d < best_d) {
-            best_d = d;
-            best = c;
-          }
-        }
-        if(best_d < h * h / 9)
-          nearest[i] = f[best];
-      }
-      for(std::size_t i = 0; i < n; ++i) {
-        const Mirror& m = mirrors[k][i];
-        const double wi = a_sym * weight(level, k, i);
-        if(!m.found || !(wi > 0))
-          continue;
-        const auto& f = level.original.triangles[m.face];
-        Vector_3d p = y[f[0]] * m.barycentric[0] + y[f[1]] * m.barycentric[1] + y[f[2]] * m.barycentric[2];
-        const std::uint32_t j = nearest[i];
-        if(snap && j != Surface_index::no_face && nearest[j] == i)
-          p = y[j];
-        const Vector_3d q = (y[i] + m_transforms[k](p)) * 0.5;
-        w[i] += wi;
-        wq[i] += q * wi;
-      }
-    }
-    std::vector<Vector_3d> b(n);
-    for(const auto& e : level.edges) {
-      const std::vector<Vector_3d>& ref = anchor_current ? y : x0;
-      const Vector_3d d = ref[e.first] - ref[e.second];
-      b[e.first] += d * a_edge;
-      b[e.second] -= d * a_edge;
-    }
-    for(std::size_t i = 0; i < n; ++i)
-      b[i] += wq[i] + x0[i] * a_disp;
-    // The matrix only depends on the level, alpha and the weights: its factorization is kept
-    // for the next solve with the same ones (the constrained steps).
-    // Its pattern (edges and diagonal) only depends on the level: the ordering and symbolic
-    // analysis are made once per level.
-    Factorization& F = m_factorization;
-    if(!(F.level == &level && F.ratio == rho && F.weights == w)) {
-      std::vector<Triplet> tr;
-      tr.reserve(4 * level.edges.size() + n);
-      for(const auto& e : level.edges) {
-        tr.emplace_back(Eigen::Index(e.first), Eigen::Index(e.first), a_edge);
-        tr.emplace_back(Eigen::Index(e.second), Eigen::Index(e.second), a_edge);
-        tr.emplace_back(Eigen::Index(e.first), Eigen::Index(e.second), -a_edge);
-        tr.emplace_back(Eigen::Index(e.second), Eigen::Index(e.first), -a_edge);
-      }
-      for(std::size_t i = 0; i < n; ++i)
-        tr.emplace_back(Eigen::Index(i), Eigen::Index(i), w[i] + a_disp);
-      // Kept with the factorization: the iterative solver refers to it.
-      Sparse& A = F.matrix;
-      A.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-      A.setFromTriplets(tr.begin(), tr.end());
-      const bool analyzed = F.analyzed == &level;
-      F.level = &level;
-      F.ratio = rho;
-      F.weights = w;
-      F.direct = n <= m_o.direct_solver_limit;
-      if(F.direct) {
-        if(!analyzed) {
-          F.ldlt.analyzePattern(A);
-          F.analyzed = &level;
-        }
-        F.ldlt.factorize(A);
-        F.direct = F.ldlt.info() == Eigen::Success;
-      }
-      if(!F.direct) {
-        F.cg.setTolerance(1e-10);
-        F.cg.setMaxIterations(1000);
-        F.cg.compute(A);
-      }
-    }
-    for(int c = 0; c < 3; ++c) {
-      Eigen::VectorXd rhs(static_cast<Eigen::Index>(n)), guess(static_cast<Eigen::Index>(n));
-      for(std::size_t i = 0; i < n; ++i) {
-        rhs(Eigen::Index(i)) = b[i][c];
-        guess(Eigen::Index(i)) = y[i][c];
-      }
-      const Eigen::VectorXd sol = F.direct ? Eigen::VectorXd(F.ldlt.solve(rhs))
-                                           : Eigen::VectorXd(F.cg.solveWithGuess(rhs, guess));
-      for(std::size_t i = 0; i < n; ++i)
-        if(std::isfinite(sol(Eigen::Index(i))))
-          x[i][c] = sol(Eigen::Index(i));
-    }
-  }
-
-  // The mirror points of positions `x` found from `previous` ones (same connectivity, slightly
-  // moved): from each previous mirror face, a descent to edge-adjacent faces whose normal is
-  // compatible while the distance to the vertex's transformed position decreases. A few
-  // triangles per vertex, no tree; the result is a local minimum next to the previous mirror
-  // point. The vertices that had one keep one (even if its face turned incompatible), so that
-  // the weights, hence the matrix and its factorization, stay those of the last exact search.
-  std::vector<std::vector<Mirror>> track_mirrors(const Level& level, const std::vector<Vector_3d>& x,
-                                                 const std::vector<std::vector<Mirror>>& previous) const
-  {
-    const std::size_t n = level.original.number_of_vertices();
-    const Surface current{x, level.original.triangles};
-    const std::vector<Vector_3d> vn = current.vertex_normals();
-    const std::vector<Vector_3d> fn = current.face_normals();
-    const std::vector<std::array<std::uint32_t, 3>>& adjacent = face_adjacency(level);
-    std::vector<std::vector<Mirror>> result(previous.size(), std::vector<Mirror>(n));
-    SAI::Parallel_workspaces<char> parallel(m_o.number_of_threads);
-    const std::size_t block = 1024;
-    for(std::size_t k = 0; k < previous.size(); ++k) {
-      const Affine_3d& inv = m_inverses[k];
-      const Matrix_3d nm = inv.normal_matrix();
-      parallel.for_each(0, (n + block - 1) / block, [&](std::size_t b, char&) {
-        for(std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i) {
-          const Mirror& p = previous[k][i];
-          if(!p.found || !(vn[i].squared_length() > 0))
-            continue;
-          const Vector_3d q = inv(x[i]);
-          const Vector_3d m = inv.transform_normal(vn[i], nm);
-          const auto on_face = [&](std::uint32_t f, std::array<double, 3>& bary) {
-            const auto c = current.corners(f);
-            return (closest_point_on_triangle(q, c[0], c[1], c[2], bary) - q).squared_length();
-          };
-          std::uint32_t face = p.face;
-          std::array<double, 3> bary;
-          double d2 = on_face(face, bary);
-          for(int step = 0; step < 32; ++step) {
-            const std::uint32_t at = face;
-            for(std::size_t e = 0; e < 3; ++e) {
-              const std::uint32_t g = adjacent[at][e];
-              if(g == Surface_index::no_face || !(SAI::dot(fn[g], m) > 0))
-                continue;
-              std::array<double, 3> bg;
-              const double dg = on_face(g, bg);
-              if(dg < d2) {
-                d2 = dg;
-                face = g;
-                bary = bg;
-              }
-            }
-            if(face == at)
-              break;
-          }
-          Mirror& r = result[k][i];
-          r.found = true;
-          r.face = face;
-          r.barycentric = bary;
-          r.distance = std::sqrt(d2);
-        }
-      });
-    }
-    return result;
+    Step_weights c;
+    c.mean_edge = m_levels.front().mean_edge > 0 ? m_levels.front().mean_edge : D;
+    c.rho = alpha >= 1 ? m_constrained_ratio : alpha / (1 - alpha);
+    c.symmetry = c.rho / double(n);
+    c.edge = m_o.shape_weight * (D * D) / (c.mean_edge * c.mean_edge) /
+             double((std::max)(std::size_t(1), level.edges.size()));
+    c.displacement = m_o.displacement_weight / double(n);
+    m_step.solve(level, mirrors, m_transforms, c, anchor_current, x);
   }
 
   // The exact mirror points of the surface of `level` at positions `x`.
@@ -882,58 +489,18 @@ private:
   // kept.
   void refine_locally(const Level& level, std::vector<Vector_3d>& x, Symmetrization_output& out) const
   {
-    const std::size_t n = level.original.number_of_vertices();
-    const std::uint32_t none = Surface_index::no_face;
     std::vector<std::vector<Mirror>> mirrors = out.mirrors.empty() ? exact_mirrors(level, x) : out.mirrors;
     double best_error = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
     out.mirrors = mirrors;
-    // Vertex neighbours.
-    std::vector<std::size_t> first(n + 1, 0);
-    for(const auto& e : level.edges)
-      ++first[e.first + 1], ++first[e.second + 1];
-    for(std::size_t i = 0; i < n; ++i)
-      first[i + 1] += first[i];
-    std::vector<std::uint32_t> neighbours(first[n]);
-    {
-      std::vector<std::size_t> fill(first.begin(), first.end() - 1);
-      for(const auto& e : level.edges)
-        neighbours[fill[e.first]++] = e.second, neighbours[fill[e.second]++] = e.first;
-    }
+    const Vertex_neighbours neighbours(level);
     std::vector<Vector_3d> best_x = x;
     const double rho = 1000 * m_o.refinement_ratio;
     const double threshold = 2 * m_o.target_error * m_diagonal;
     for(std::size_t step = 0; step < m_o.local_refinement_steps && best_error > m_o.target_error; ++step) {
-      std::vector<char> on(n, 0);
-      std::vector<std::uint32_t> front;
-      for(std::size_t k = 0; k < mirrors.size(); ++k)
-        for(std::size_t i = 0; i < n; ++i) {
-          const Mirror& m = mirrors[k][i];
-          if(!m.found || !(m.distance > threshold) || !(weight(level, k, i) > 0))
-            continue;
-          for(std::uint32_t v : {std::uint32_t(i), level.original.triangles[m.face][0],
-                                 level.original.triangles[m.face][1], level.original.triangles[m.face][2]})
-            if(!on[v]) {
-              on[v] = 1;
-              front.push_back(v);
-            }
-        }
-      if(front.empty())
+      const std::vector<std::uint32_t> unknown =
+        local_unknowns(level, neighbours, mirrors, threshold, m_o.local_refinement_rings);
+      if(unknown.empty())
         break;
-      for(std::size_t ring = 0; ring < m_o.local_refinement_rings; ++ring) {
-        std::vector<std::uint32_t> next;
-        for(std::uint32_t v : front)
-          for(std::size_t q = first[v]; q < first[v + 1]; ++q)
-            if(!on[neighbours[q]]) {
-              on[neighbours[q]] = 1;
-              next.push_back(neighbours[q]);
-            }
-        front.swap(next);
-      }
-      std::vector<std::uint32_t> unknown(n, none);
-      std::uint32_t count = 0;
-      for(std::size_t i = 0; i < n; ++i)
-        if(on[i])
-          unknown[i] = count++;
       refine_step(level, mirrors, rho, x, &unknown);
       mirrors = exact_mirrors(level, x, &mirrors);
       const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
@@ -971,147 +538,27 @@ private:
                    std::vector<Vector_3d>& x, const std::vector<std::uint32_t>* active = nullptr) const
   {
     const std::size_t n = level.original.number_of_vertices();
-    const std::uint32_t none = Surface_index::no_face;
     std::vector<std::uint32_t> identity;
     if(active == nullptr) {
       identity.resize(n);
       std::iota(identity.begin(), identity.end(), 0u);
       active = &identity;
     }
-    const std::vector<std::uint32_t>& unknown = *active;
-    std::size_t m_unknowns = 0;
-    for(std::uint32_t u : unknown)
-      if(u != none)
-        m_unknowns = (std::max)(m_unknowns, std::size_t(u) + 1);
     const double D = m_diagonal;
-    const double h = m_levels.front().mean_edge > 0 ? m_levels.front().mean_edge : D;
-    const double a_err = rho / (double(n) * D * D);
-    const double a_edge = 1.0 / double((std::max)(std::size_t(1), level.edges.size()));
-    const double eta = 0.01, mu = 1e-4;
-    const double a_disp = mu / (double(n) * h * h);
-    std::vector<Triplet> tr;
-    std::size_t active_edges = 0;
-    for(const auto& e : level.edges)
-      active_edges += unknown[e.first] != none || unknown[e.second] != none ? 1 : 0;
-    tr.reserve(16 * 9 * m_unknowns * mirrors.size() + 36 * active_edges + 3 * m_unknowns);
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(3 * m_unknowns));
-    const auto block = [&](std::size_t u, std::size_t v, const Matrix_3d& m, double c) {
-      const std::uint32_t iu = unknown[u], iv = unknown[v];
-      if(iu == none || iv == none)
-        return;
-      for(int a = 0; a < 3; ++a)
-        for(int b = 0; b < 3; ++b)
-          if(m[std::size_t(a)][b] != 0)
-            tr.emplace_back(Eigen::Index(3 * std::size_t(iu) + std::size_t(a)), Eigen::Index(3 * std::size_t(iv) + std::size_t(b)),
-                            c * m[std::size_t(a)][b]);
-    };
-    const auto add_rhs = [&](std::size_t u, int a, double value) {
-      if(unknown[u] != none)
-        rhs(Eigen::Index(3 * std::size_t(unknown[u]) + std::size_t(a))) += value;
-    };
+    Refinement_weights c;
+    c.mean_edge = m_levels.front().mean_edge > 0 ? m_levels.front().mean_edge : D;
+    c.error = rho / (double(n) * D * D);
+    c.edge = 1.0 / double((std::max)(std::size_t(1), level.edges.size()));
+    c.eta = 0.01;
+    c.displacement = 1e-4 / (double(n) * c.mean_edge * c.mean_edge); // mu = 1e-4
+    c.tangential_weight = m_o.tangential_weight;
+    Refinement_system system(*active, c);
+    system.reserve(mirrors.size(), level);
     const std::vector<Vector_3d> fnormals = Surface{x, level.original.triangles}.face_normals();
-    for(std::size_t k = 0; k < mirrors.size(); ++k) {
-      const Affine_3d& inv = m_inverses[k];
-      const Matrix_3d L = inv.linear, Lt = SAI::transpose(L);
-      for(std::size_t i = 0; i < n; ++i) {
-        const Mirror& m = mirrors[k][i];
-        const double c = a_err * weight(level, k, i);
-        if(!m.found || !(c > 0))
-          continue;
-        const auto& f = level.original.triangles[m.face];
-        if(unknown[i] == none && unknown[f[0]] == none && unknown[f[1]] == none && unknown[f[2]] == none)
-          continue;
-        const Vector_3d p = x[f[0]] * m.barycentric[0] + x[f[1]] * m.barycentric[1] + x[f[2]] * m.barycentric[2];
-        const Vector_3d r = inv(x[i]) - p;
-        // The metric of the residual: its part along the normal of the mirror face, and tau of
-        // its tangential part. A small residual is a distance to the tangent plane (the mirror
-        // point may slide along the surface); one of an edge's length or more is a distance to
-        // the point, whose tangent plane says little so far away.
-        const Vector_3d& nf = fnormals[m.face];
-        const double tau = (std::min)(1.0, (std::max)(m_o.tangential_weight, r.length() / h));
-        Matrix_3d M;
-        for(int a = 0; a < 3; ++a)
-          for(int b = 0; b < 3; ++b)
-            M[std::size_t(a)][b] = (1 - tau) * nf[a] * nf[b] + (a == b ? tau : 0.0);
-        const Matrix_3d LtM = SAI::multiply(Lt, M), ML = SAI::multiply(M, L), LtML = SAI::multiply(LtM, L);
-        block(i, i, LtML, c);
-        const Vector_3d Mr = SAI::multiply(M, r), LtMr = SAI::multiply(Lt, Mr);
-        for(int a = 0; a < 3; ++a)
-          add_rhs(i, a, -c * LtMr[a]);
-        for(int u = 0; u < 3; ++u) {
-          const double bu = m.barycentric[std::size_t(u)];
-          block(i, f[std::size_t(u)], LtM, -c * bu);
-          block(f[std::size_t(u)], i, ML, -c * bu);
-          for(int a = 0; a < 3; ++a)
-            add_rhs(f[std::size_t(u)], a, c * bu * Mr[a]);
-          for(int v = 0; v < 3; ++v)
-            block(f[std::size_t(u)], f[std::size_t(v)], M, c * bu * m.barycentric[std::size_t(v)]);
-        }
-      }
-    }
-    for(const auto& e : level.edges) {
-      if(unknown[e.first] == none && unknown[e.second] == none)
-        continue;
-      const Vector_3d d = x[e.first] - x[e.second];
-      const double l = d.length();
-      const double l0 = (level.original.points[e.first] - level.original.points[e.second]).length();
-      if(!(l > 0) || !(l0 > 0))
-        continue;
-      const Vector_3d g = d / (l * l0);
-      const double r = (l - l0) / l0;
-      Matrix_3d G;
-      for(int a = 0; a < 3; ++a)
-        for(int b = 0; b < 3; ++b)
-          G[std::size_t(a)][b] = g[a] * g[b] + (a == b ? eta / (l0 * l0) : 0.0);
-      block(e.first, e.first, G, a_edge);
-      block(e.second, e.second, G, a_edge);
-      block(e.first, e.second, G, -a_edge);
-      block(e.second, e.first, G, -a_edge);
-      for(int a = 0; a < 3; ++a) {
-        add_rhs(e.first, a, -a_edge * g[a] * r);
-        add_rhs(e.second, a, a_edge * g[a] * r);
-      }
-    }
-    for(std::size_t i = 0; i < 3 * m_unknowns; ++i)
-      tr.emplace_back(Eigen::Index(i), Eigen::Index(i), a_disp);
-    Sparse A(static_cast<Eigen::Index>(3 * m_unknowns), static_cast<Eigen::Index>(3 * m_unknowns));
-    A.setFromTriplets(tr.begin(), tr.end());
-    LDLT ldlt(A);
-    if(ldlt.info() != Eigen::Success)
-      return;
-    const Eigen::VectorXd delta = ldlt.solve(rhs);
-    for(std::size_t i = 0; i < n; ++i) {
-      if(unknown[i] == none)
-        continue;
-      for(int a = 0; a < 3; ++a) {
-        const double v = delta(Eigen::Index(3 * std::size_t(unknown[i]) + std::size_t(a)));
-        if(std::isfinite(v))
-          x[i][a] += v;
-      }
-    }
-  }
-
-  // The factorization of the last solve's matrix.
-  struct Factorization
-  {
-    const Level* level = nullptr;
-    const Level* analyzed = nullptr; // the level of the symbolic analysis
-    double ratio = -1;
-    std::vector<double> weights;
-    bool direct = true;
-    Sparse matrix;
-    LDLT ldlt;
-    Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> cg;
-  };
-  mutable Factorization m_factorization;
-  double m_constrained_ratio = 100; // alpha / (1 - alpha) of the current constrained steps
-  double m_error_before = 0;        // RMS mirror distance of the input, relative to the diagonal
-  std::vector<std::vector<Mirror>> m_input_mirrors; // the mirror points of the input
-
-  double weight(const Level& level, std::size_t k, std::size_t i) const
-  {
-    const std::vector<double>& w = level.weights[k];
-    return w.empty() ? 1.0 : w[i];
+    for(std::size_t k = 0; k < mirrors.size(); ++k)
+      system.add_mirror_terms(level, mirrors[k], k, m_inverses[k], x, fnormals);
+    system.add_edge_terms(level, x);
+    system.solve(x);
   }
 
   const Surface& m_input;
@@ -1119,6 +566,11 @@ private:
   std::vector<Affine_3d> m_transforms, m_inverses;
   double m_diagonal = 1;
   std::vector<Level> m_levels;
+  mutable Step_solver m_step;       // the last solve's factorization, kept
+  double m_constrained_ratio = 100; // alpha / (1 - alpha) of the current constrained steps
+  double m_error_before = 0;        // RMS mirror distance of the input, relative to the diagonal
+  std::vector<std::vector<Mirror>> m_input_mirrors; // the mirror points of the input
+  double m_total_work = 0, m_done_work = 0;         // for progress: vertices times steps
 };
 
 } // namespace internal

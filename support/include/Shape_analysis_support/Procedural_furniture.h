@@ -1,8 +1,8 @@
 // Copyright (c) 2026 CGAL Global Shape Analysis contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_SHAPE_ANALYSIS_INTERNAL_PROCEDURAL_FURNITURE_H
-#define CGAL_SHAPE_ANALYSIS_INTERNAL_PROCEDURAL_FURNITURE_H
+#ifndef SHAPE_ANALYSIS_SUPPORT_PROCEDURAL_FURNITURE_H
+#define SHAPE_ANALYSIS_SUPPORT_PROCEDURAL_FURNITURE_H
 
 // Procedural sets of chairs and tables with known part labels, for the tests and benchmarks of
 // consistent co-segmentation. Like the furniture models of shape repositories, every piece is a
@@ -16,7 +16,7 @@
 // also carries the index of its piece (`piece`), so that finer, per-piece agreement can be
 // measured.
 
-#include <CGAL/Shape_analysis/internal/Procedural_shapes.h>
+#include <Shape_analysis_support/Procedural_shapes.h>
 
 #include <algorithm>
 #include <array>
@@ -28,8 +28,7 @@
 #include <vector>
 
 namespace CGAL {
-namespace Shape_analysis {
-namespace internal {
+namespace Shape_analysis_support {
 
 enum Furniture_part : std::size_t { SEAT = 0, BACK = 1, LEG = 2, ARMREST = 3 };
 
@@ -306,8 +305,7 @@ inline double furniture_label_accuracy(const std::vector<Furniture_model>& model
   return all > 0 ? right / all : 0.0;
 }
 
-} // namespace internal
-} // namespace Shape_analysis
+} // namespace Shape_analysis_support
 } // namespace CGAL
 
-#endif // CGAL_SHAPE_ANALYSIS_INTERNAL_PROCEDURAL_FURNITURE_H
+#endif // SHAPE_ANALYSIS_SUPPORT_PROCEDURAL_FURNITURE_H

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 CGAL Global Shape Analysis contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_URBAN_SCENE_H
-#define CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_URBAN_SCENE_H
+#ifndef SHAPE_ANALYSIS_SUPPORT_URBAN_SCENE_H
+#define SHAPE_ANALYSIS_SUPPORT_URBAN_SCENE_H
 
 // Ground-truth data for object recognition in city LIDAR: a procedural street scene (sloped
 // ground with a two-lane road and raised sidewalks, buildings, trees and the small objects of
@@ -38,8 +38,7 @@
 #include <vector>
 
 namespace CGAL {
-namespace Point_set_object_recognition {
-namespace internal {
+namespace Shape_analysis_support {
 
 // Kinds of surfaces: background (ground, building, tree) and the object classes of the thesis.
 enum Object_class : int {
@@ -813,8 +812,7 @@ inline void write_ground_truth(std::ostream& os, const std::vector<Urban_object>
        << ' ' << object_class_name(b.object_class) << '\n';
 }
 
-} // namespace internal
-} // namespace Point_set_object_recognition
+} // namespace Shape_analysis_support
 } // namespace CGAL
 
-#endif // CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_URBAN_SCENE_H
+#endif // SHAPE_ANALYSIS_SUPPORT_URBAN_SCENE_H

@@ -1,15 +1,15 @@
 // Copyright (c) 2026 CGAL Global Shape Analysis contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_SCANNED_OBJECTS_H
-#define CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_SCANNED_OBJECTS_H
+#ifndef SHAPE_ANALYSIS_SUPPORT_SCANNED_OBJECTS_H
+#define SHAPE_ANALYSIS_SUPPORT_SCANNED_OBJECTS_H
 
 // Ground truth for the segmentation of objects (tests, benchmarks, example): a scanned procedural
 // street (Urban_scene.h) with its ground removed by remove_background(), the true object of every
 // remaining point, the class of every object and the objects' true locations (their base on the
 // ground), restricted to the objects the scanner saw.
 
-#include <CGAL/Point_set_object_recognition/internal/Urban_scene.h>
+#include <Shape_analysis_support/Urban_scene.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
 
 #include <array>
@@ -17,8 +17,7 @@
 #include <vector>
 
 namespace CGAL {
-namespace Point_set_object_recognition {
-namespace internal {
+namespace Shape_analysis_support {
 
 struct Scanned_objects
 {
@@ -42,10 +41,11 @@ inline Scanned_objects scanned_objects(const Urban_scene& scene, const Urban_sca
   all.reserve(scan.points.size());
   for(const Urban_scan_point& p : scan.points)
     all.emplace_back(p.x, p.y, p.z);
-  const Background_removal_result b = CGAL::Point_set_object_recognition::remove_background(all);
+  namespace PSOR = CGAL::Point_set_object_recognition;
+  const PSOR::Background_removal_result b = PSOR::remove_background(all);
   std::map<int, std::size_t> seen;
   for(std::size_t i = 0; i < all.size(); ++i)
-    if(b.kind[i] != Point_kind::GROUND) {
+    if(b.kind[i] != PSOR::Point_kind::GROUND) {
       s.points.push_back(all[i]);
       s.scan_index.push_back(i);
       s.instance.push_back(scan.points[i].instance);
@@ -64,8 +64,7 @@ inline Scanned_objects scanned_objects(const Urban_scene& scene, const Urban_sca
   return s;
 }
 
-} // namespace internal
-} // namespace Point_set_object_recognition
+} // namespace Shape_analysis_support
 } // namespace CGAL
 
-#endif // CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_SCANNED_OBJECTS_H
+#endif // SHAPE_ANALYSIS_SUPPORT_SCANNED_OBJECTS_H

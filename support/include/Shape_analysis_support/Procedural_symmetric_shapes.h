@@ -1,8 +1,8 @@
 // Copyright (c) 2026 CGAL Global Shape Analysis contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_SURFACE_MESH_SYMMETRIZATION_INTERNAL_PROCEDURAL_SYMMETRIC_SHAPES_H
-#define CGAL_SURFACE_MESH_SYMMETRIZATION_INTERNAL_PROCEDURAL_SYMMETRIC_SHAPES_H
+#ifndef SHAPE_ANALYSIS_SUPPORT_PROCEDURAL_SYMMETRIC_SHAPES_H
+#define SHAPE_ANALYSIS_SUPPORT_PROCEDURAL_SYMMETRIC_SHAPES_H
 
 // Procedural shapes with known symmetries, for tests, benchmarks and examples (deterministic,
 // plain arrays):
@@ -20,8 +20,7 @@
 #include <vector>
 
 namespace CGAL {
-namespace Surface_mesh_symmetrization {
-namespace internal {
+namespace Shape_analysis_support {
 
 struct Procedural_mesh
 {
@@ -85,8 +84,7 @@ inline std::array<double, 3> asymmetric_warp(const std::array<double, 3>& p, dou
            z + 0.5 * a * std::cos(2 * y + x)}};
 }
 
-} // namespace internal
-} // namespace Surface_mesh_symmetrization
+} // namespace Shape_analysis_support
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_SYMMETRIZATION_INTERNAL_PROCEDURAL_SYMMETRIC_SHAPES_H
+#endif // SHAPE_ANALYSIS_SUPPORT_PROCEDURAL_SYMMETRIC_SHAPES_H

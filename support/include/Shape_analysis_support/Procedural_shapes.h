@@ -1,8 +1,8 @@
 // Copyright (c) 2026 CGAL Global Shape Analysis contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_SHAPE_ANALYSIS_INTERNAL_PROCEDURAL_SHAPES_H
-#define CGAL_SHAPE_ANALYSIS_INTERNAL_PROCEDURAL_SHAPES_H
+#ifndef SHAPE_ANALYSIS_SUPPORT_PROCEDURAL_SHAPES_H
+#define SHAPE_ANALYSIS_SUPPORT_PROCEDURAL_SHAPES_H
 
 // Procedural part-structured triangle meshes with known ground-truth part labels, for tests and
 // benchmarks. Deterministic: the same shape, cell size and seed give the same mesh, bit for bit,
@@ -23,7 +23,7 @@
 // utilities for tests: rigid transforms, face shuffling with a seed, and partition agreement
 // measures (Rand index, best-matching overlap).
 
-#include <CGAL/Shape_analysis/internal/Partition_agreement.h>
+#include <Shape_analysis_support/Partition_agreement.h>
 #include <CGAL/Shape_analysis/internal/Random.h>
 #include <CGAL/Shape_analysis/internal/Vector_3d.h>
 
@@ -45,8 +45,10 @@
 #include <vector>
 
 namespace CGAL {
-namespace Shape_analysis {
-namespace internal {
+namespace Shape_analysis_support {
+
+using CGAL::Shape_analysis::internal::Random_stream;
+using CGAL::Shape_analysis::internal::Vector_3d;
 
 // Random numbers identical on every platform (splitmix64).
 typedef Random_stream Procedural_random;
@@ -633,8 +635,7 @@ inline std::size_t number_of_components(const Labelled_triangle_mesh& mesh,
   return count;
 }
 
-} // namespace internal
-} // namespace Shape_analysis
+} // namespace Shape_analysis_support
 } // namespace CGAL
 
-#endif // CGAL_SHAPE_ANALYSIS_INTERNAL_PROCEDURAL_SHAPES_H
+#endif // SHAPE_ANALYSIS_SUPPORT_PROCEDURAL_SHAPES_H

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 CGAL Global Shape Analysis contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_SHAPE_ANALYSIS_INTERNAL_PARTITION_AGREEMENT_H
-#define CGAL_SHAPE_ANALYSIS_INTERNAL_PARTITION_AGREEMENT_H
+#ifndef SHAPE_ANALYSIS_SUPPORT_PARTITION_AGREEMENT_H
+#define SHAPE_ANALYSIS_SUPPORT_PARTITION_AGREEMENT_H
 
 // Agreement measures between two partitions of the same items (tests, benchmarks, and later the
 // comparison of segmentations): Rand index and best-matching overlap.
@@ -15,8 +15,7 @@
 #include <vector>
 
 namespace CGAL {
-namespace Shape_analysis {
-namespace internal {
+namespace Shape_analysis_support {
 
 // Agreement of two partitions of the same items (labels are arbitrary non-negative integers;
 // weights default to 1 per item).
@@ -100,8 +99,7 @@ double matched_overlap(const std::vector<LabelA>& a, const std::vector<LabelB>& 
   return total > 0 ? matched / total : 1.0;
 }
 
-} // namespace internal
-} // namespace Shape_analysis
+} // namespace Shape_analysis_support
 } // namespace CGAL
 
-#endif // CGAL_SHAPE_ANALYSIS_INTERNAL_PARTITION_AGREEMENT_H
+#endif // SHAPE_ANALYSIS_SUPPORT_PARTITION_AGREEMENT_H

@@ -1,0 +1,252 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_CONSISTENT_SEGMENTATION_INTERNAL_COSEG_CORRESPONDENCES_H
+#define CGAL_CONSISTENT_SEGMENTATION_INTERNAL_COSEG_CORRESPONDENCES_H
+
+// Stage two of the co-segmentation (see Cosegmentation.h): samples on every mesh, the pairs of
+// meshes to align, their alignments and the correspondences between their samples.
+
+#include <CGAL/Consistent_segmentation/internal/Cosegmentation_types.h>
+#include <CGAL/Shape_analysis/internal/Parallel.h>
+#include <CGAL/Shape_analysis/internal/Point_tree.h>
+#include <CGAL/Shape_analysis/internal/Random.h>
+#include <CGAL/Shape_analysis/internal/Similarity_alignment.h>
+#include <CGAL/Shape_analysis/internal/Triangle_sampling.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Consistent_segmentation {
+namespace internal {
+
+struct Surface_sample
+{
+  std::vector<SAI::Vector_3d> points, normals;
+  std::vector<std::uint32_t> node;
+  double diagonal = 0;
+};
+
+inline Surface_sample sample_surface(const Coseg_mesh& m, std::size_t count, std::uint64_t seed,
+                                     std::size_t index)
+{
+  Surface_sample s;
+  const SAI::Dual_graph& g = m.graph;
+  const SAI::Weighted_triangle_sampler sampler(g.node_size);
+  SAI::Random_stream rng(SAI::Random_stream::mix(seed ^ 0x436F736567ull), index);
+  SAI::Vector_3d lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for(std::size_t k = 0; k < count; ++k) {
+    const std::size_t f = sampler.triangle(rng);
+    const SAI::Vector_3d p = SAI::Weighted_triangle_sampler::point_in(m.triangles[f], rng);
+    s.points.push_back(p);
+    s.normals.push_back(g.node_normal[f]);
+    s.node.push_back(static_cast<std::uint32_t>(f));
+    lo = lo.min(p);
+    hi = hi.max(p);
+  }
+  s.diagonal = (hi - lo).length();
+  return s;
+}
+
+// A shape distribution (histogram of distances between sample pairs, relative to the RMS radius)
+// to choose the partners of a mesh in a large set.
+inline std::vector<double> shape_distribution(const Surface_sample& s)
+{
+  const std::size_t bins = 32;
+  std::vector<double> h(bins, 0.0);
+  const std::size_t n = s.points.size();
+  SAI::Vector_3d c;
+  for(const auto& p : s.points)
+    c += p;
+  c = c / double(n);
+  double r2 = 0;
+  for(const auto& p : s.points)
+    r2 += (p - c).squared_length();
+  const double radius = std::sqrt(r2 / double(n));
+  if(!(radius > 0))
+    return h;
+  std::size_t count = 0;
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t step : {std::size_t(1), n / 3 + 1, n / 2 + 1}) {
+      const double d = (s.points[i] - s.points[(i + step) % n]).length() / radius;
+      h[(std::min)(bins - 1, std::size_t(d / 3.0 * double(bins)))] += 1;
+      ++count;
+    }
+  for(double& x : h)
+    x /= double(count);
+  return h;
+}
+
+struct Correspondence
+{
+  std::uint32_t mesh_a, node_a, mesh_b, node_b;
+  double weight;
+};
+
+// Links every sample of `from` (moved by `t`) to the closest compatible sample of `to`.
+inline void link_samples(const Surface_sample& from, std::uint32_t mesh_from, const SAI::Similarity_3d& t,
+                         const Surface_sample& to, const SAI::Point_tree& to_tree, std::uint32_t mesh_to,
+                         const Coseg_options& o, std::vector<Correspondence>& out)
+{
+  const double max_distance = o.distance_fraction * to.diagonal;
+  const double weight = 1.0 / double(from.points.size());
+  std::vector<std::pair<double, std::uint32_t>> near;
+  for(std::size_t i = 0; i < from.points.size(); ++i) {
+    const SAI::Vector_3d q = t(from.points[i]);
+    const SAI::Vector_3d nq = SAI::multiply(t.rotation, from.normals[i]);
+    to_tree.k_nearest(q, 8, near);
+    for(const auto& c : near) {
+      if(c.first > max_distance * max_distance)
+        break;
+      if(SAI::dot(nq, to.normals[c.second]) > o.normal_threshold) {
+        if(mesh_from != mesh_to || from.node[i] != to.node[c.second])
+          out.push_back(Correspondence{mesh_from, from.node[i], mesh_to, to.node[c.second], weight});
+        break;
+      }
+    }
+  }
+}
+
+// The samples of every mesh and their search trees.
+inline void sample_meshes(const std::vector<Coseg_mesh>& meshes, const Coseg_options& o,
+                          std::vector<Surface_sample>& samples, std::vector<SAI::Point_tree>& trees)
+{
+  const std::size_t m = meshes.size();
+  samples.clear();
+  samples.resize(m);
+  trees.clear();
+  trees.resize(m);
+  SAI::Parallel_workspaces<char> workers(o.number_of_threads);
+  workers.for_each(0, m, [&](std::size_t i, char&) {
+    samples[i] = sample_surface(meshes[i], o.number_of_points, o.seed, i);
+    std::vector<std::uint32_t> ids(samples[i].points.size());
+    std::iota(ids.begin(), ids.end(), std::uint32_t(0));
+    trees[i] = SAI::Point_tree(samples[i].points, ids);
+  });
+}
+
+// The pairs of meshes to align (i < j): all of them in small sets, else each mesh with the
+// 2 number_of_partners meshes of closest shape distribution.
+inline std::vector<std::pair<std::uint32_t, std::uint32_t>>
+pairs_to_align(const std::vector<Surface_sample>& samples, const Coseg_options& o)
+{
+  const std::size_t m = samples.size();
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  const std::size_t candidates = 2 * o.number_of_partners;
+  if(o.number_of_partners == 0 || m <= candidates + 1) {
+    for(std::uint32_t i = 0; i < m; ++i)
+      for(std::uint32_t j = i + 1; j < m; ++j)
+        pairs.emplace_back(i, j);
+  } else {
+    std::vector<std::vector<double>> d2(m);
+    for(std::size_t i = 0; i < m; ++i)
+      d2[i] = shape_distribution(samples[i]);
+    std::set<std::pair<std::uint32_t, std::uint32_t>> chosen;
+    for(std::uint32_t i = 0; i < m; ++i) {
+      std::vector<std::pair<double, std::uint32_t>> by_distance;
+      for(std::uint32_t j = 0; j < m; ++j)
+        if(j != i) {
+          double d = 0;
+          for(std::size_t b = 0; b < d2[i].size(); ++b)
+            d += std::abs(d2[i][b] - d2[j][b]);
+          by_distance.emplace_back(d, j);
+        }
+      std::sort(by_distance.begin(), by_distance.end());
+      for(std::size_t k = 0; k < candidates && k < by_distance.size(); ++k)
+        chosen.emplace((std::min)(i, by_distance[k].second), (std::max)(i, by_distance[k].second));
+    }
+    pairs.assign(chosen.begin(), chosen.end());
+  }
+  return pairs;
+}
+
+// Aligns every pair and links the samples of its meshes both ways (links[p], and the RMS of the
+// alignment relative to the second mesh's sample diagonal in pair_rms[p]); links[pairs.size() + i]
+// gets the mirror correspondences of mesh i, if it has a reflection plane.
+inline void link_meshes(const std::vector<Coseg_mesh>& meshes, const std::vector<Surface_sample>& samples,
+                        const std::vector<SAI::Point_tree>& trees,
+                        const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
+                        const Coseg_options& o, std::vector<std::vector<Correspondence>>& links,
+                        std::vector<double>& pair_rms)
+{
+  const std::size_t m = meshes.size();
+  links.assign(pairs.size() + m, {});
+  pair_rms.assign(pairs.size(), 0.0);
+  SAI::Restart_alignment_options ao;
+  ao.coarse_points = 100;
+  ao.coarse_iterations = 15;
+  ao.refined_restarts = 2;
+  ao.icp.max_iterations = 30;
+  ao.icp.keep_fraction = 0.9;
+  ao.number_of_threads = 1;
+  // The alignments use the first points of the samples (in random order), the
+  // correspondences all of them.
+  const std::size_t aligned_points = (std::min)(o.number_of_points, std::size_t(400));
+  std::vector<std::vector<SAI::Vector_3d>> prefix(m);
+  for(std::size_t i = 0; i < m; ++i)
+    prefix[i].assign(samples[i].points.begin(),
+                     samples[i].points.begin() + std::ptrdiff_t((std::min)(aligned_points, samples[i].points.size())));
+  SAI::Parallel_workspaces<char> workers(o.number_of_threads);
+  workers.for_each(0, pairs.size(), [&](std::size_t p, char&) {
+    const std::uint32_t a = pairs[p].first, b = pairs[p].second;
+    const SAI::Restart_alignment_result r = SAI::align_with_restarts(prefix[a], prefix[b], ao);
+    pair_rms[p] = samples[b].diagonal > 0 ? r.rms / samples[b].diagonal : 0.0;
+    link_samples(samples[a], a, r.transform, samples[b], trees[b], b, o, links[p]);
+    link_samples(samples[b], b, r.transform.inverse(), samples[a], trees[a], a, o, links[p]);
+  });
+  workers.for_each(0, m, [&](std::size_t i, char&) {
+    if(!meshes[i].has_plane)
+      return;
+    // The reflection x -> x - 2 (n.x - d) n as a similarity: R = I - 2 n n^T (det -1) is not a
+    // rotation, so it is applied by hand.
+    const SAI::Vector_3d nn = meshes[i].plane_normal;
+    const double d = meshes[i].plane_offset;
+    Surface_sample mirrored = samples[i];
+    for(std::size_t k = 0; k < mirrored.points.size(); ++k) {
+      const SAI::Vector_3d& p = samples[i].points[k];
+      mirrored.points[k] = p - nn * (2 * (SAI::dot(nn, p) - d));
+      const SAI::Vector_3d& q = samples[i].normals[k];
+      mirrored.normals[k] = q - nn * (2 * SAI::dot(nn, q));
+    }
+    link_samples(mirrored, std::uint32_t(i), SAI::Similarity_3d(), samples[i], trees[i],
+                 std::uint32_t(i), o, links[pairs.size() + i]);
+  });
+}
+
+// Only the pairs among the `number_of_partners` best aligned of one of their meshes keep their
+// links: a poor alignment (other poses, other proportions) gives misleading correspondences.
+inline void keep_best_partners(std::size_t m, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
+                               const std::vector<double>& pair_rms, std::size_t number_of_partners,
+                               std::vector<std::vector<Correspondence>>& links)
+{
+  if(number_of_partners == 0)
+    return;
+  std::vector<std::vector<std::pair<double, std::size_t>>> of_mesh(m);
+  for(std::size_t p = 0; p < pairs.size(); ++p) {
+    of_mesh[pairs[p].first].emplace_back(pair_rms[p], p);
+    of_mesh[pairs[p].second].emplace_back(pair_rms[p], p);
+  }
+  std::vector<char> keep(pairs.size(), 0);
+  for(auto& list : of_mesh) {
+    std::sort(list.begin(), list.end());
+    for(std::size_t k = 0; k < number_of_partners && k < list.size(); ++k)
+      keep[list[k].second] = 1;
+  }
+  for(std::size_t p = 0; p < pairs.size(); ++p)
+    if(!keep[p])
+      std::vector<Correspondence>().swap(links[p]);
+}
+
+} // namespace internal
+} // namespace Consistent_segmentation
+} // namespace CGAL
+
+#endif // CGAL_CONSISTENT_SEGMENTATION_INTERNAL_COSEG_CORRESPONDENCES_H
