@@ -56,11 +56,11 @@ namespace {
 
 using psb::Mesh;
 typedef Mesh::Face_index Face;
+namespace SAS = CGAL::Shape_analysis_support;
 typedef SAS::Json Json;
 namespace CS = CGAL::Consistent_segmentation;
 namespace SAI = CGAL::Shape_analysis::internal;
 namespace fs = std::filesystem;
-namespace SAS = CGAL::Shape_analysis_support;
 
 using bench_util::seconds_since;
 

@@ -47,10 +47,10 @@ using psb::read_mesh;
 using psb::split;
 using psb::write_output;
 typedef Mesh::Face_index Face;
+namespace SAS = CGAL::Shape_analysis_support;
 typedef SAS::Json Json;
 namespace CS = CGAL::Consistent_segmentation;
 namespace fs = std::filesystem;
-namespace SAS = CGAL::Shape_analysis_support;
 
 using bench_util::seconds_since;
 

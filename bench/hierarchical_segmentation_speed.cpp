@@ -40,9 +40,9 @@ namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 typedef Mesh::Face_index Face;
+namespace SAS = CGAL::Shape_analysis_support;
 typedef SAS::Json Json;
 namespace CS = CGAL::Consistent_segmentation;
-namespace SAS = CGAL::Shape_analysis_support;
 
 struct Timings
 {

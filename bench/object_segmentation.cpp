@@ -53,10 +53,10 @@
 
 namespace {
 
+namespace SAS = CGAL::Shape_analysis_support;
 typedef SAS::Json Json;
 namespace PSOR = CGAL::Point_set_object_recognition;
 namespace PSI = CGAL::Point_set_object_recognition::internal;
-namespace SAS = CGAL::Shape_analysis_support;
 
 double quantile(std::vector<double> v, double q)
 {

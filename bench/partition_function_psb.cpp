@@ -43,10 +43,10 @@ namespace {
 using psb::Mesh;
 typedef Mesh::Face_index Face;
 typedef Mesh::Edge_index Edge;
+namespace SAS = CGAL::Shape_analysis_support;
 typedef SAS::Json Json;
 namespace RC = CGAL::Randomized_cuts;
 namespace CS = CGAL::Consistent_segmentation;
-namespace SAS = CGAL::Shape_analysis_support;
 
 using bench_util::seconds_since;
 

@@ -49,10 +49,10 @@ namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 typedef Mesh::Edge_index Edge;
+namespace SAS = CGAL::Shape_analysis_support;
 typedef SAS::Json Json;
 namespace RC = CGAL::Randomized_cuts;
 namespace SMS = CGAL::Surface_mesh_simplification;
-namespace SAS = CGAL::Shape_analysis_support;
 
 double median(std::vector<double> s)
 {
