@@ -38,10 +38,9 @@
 namespace {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 Point;
+namespace PSOR = CGAL::Point_set_object_recognition;
 namespace SAS = CGAL::Shape_analysis_support;
 typedef SAS::Json Json;
-namespace PSOR = CGAL::Point_set_object_recognition;
-namespace PSI = CGAL::Point_set_object_recognition::internal;
 
 using bench_util::seconds_since;
 

@@ -53,10 +53,9 @@
 
 namespace {
 
+namespace PSOR = CGAL::Point_set_object_recognition;
 namespace SAS = CGAL::Shape_analysis_support;
 typedef SAS::Json Json;
-namespace PSOR = CGAL::Point_set_object_recognition;
-namespace PSI = CGAL::Point_set_object_recognition::internal;
 
 double quantile(std::vector<double> v, double q)
 {
@@ -70,7 +69,8 @@ std::string class_name(int c) { return SAS::object_class_name(c); }
 
 Json evaluation_json(const PSOR::Segmentation_evaluation& e) { return SAS::segmentation_evaluation_json(e, class_name); }
 
-// The parameters of a run: the defaults, or the values given (negative / zero / -1: default).
+// The parameters of a run: the library's defaults (Segment_objects_options), or the values given
+// (negative / zero / -1: default).
 struct Tuning
 {
   double weight = -1, sigma = -1, max_cut = -1, cell = -1;
@@ -79,23 +79,18 @@ struct Tuning
   PSOR::Segmentation_result run(const SAS::Scanned_objects& s, const std::vector<std::array<double, 3>>& at,
                                 PSOR::Segmentation_method method, double radius, std::size_t threads) const
   {
-    const double c = cell >= 0 ? cell : 0.2;
-    return PSOR::segment_objects(s.points, at,
-                                 PSOR::parameters::segmentation_method(method)
-                                   .background_radius(radius)
-                                   .number_of_threads(threads)
-                                   .background_weight(weight >= 0 ? weight : default_weight())
-                                   .edge_sigma(sigma > 0 ? sigma : (c > 0 ? 4 * c : 0.2))
-                                   .maximum_cut_cost(max_cut >= 0 ? max_cut : default_max_cut())
-                                   .graph_cell_size(c)
-                                   .number_of_neighbors(neighbors > 0 ? neighbors : default_neighbors())
-                                   .maximum_graph_size(graph_size != std::size_t(-1) ? graph_size : default_graph_size()));
+    const PSOR::Segment_objects_options d;
+    const auto np = PSOR::parameters::segmentation_method(method)
+                      .background_radius(radius)
+                      .number_of_threads(threads)
+                      .background_weight(weight >= 0 ? weight : d.background_weight)
+                      .maximum_cut_cost(max_cut >= 0 ? max_cut : d.maximum_cut_cost)
+                      .graph_cell_size(cell >= 0 ? cell : d.graph_cell_size)
+                      .number_of_neighbors(neighbors > 0 ? neighbors : d.number_of_neighbors)
+                      .maximum_graph_size(graph_size != std::size_t(-1) ? graph_size : d.maximum_graph_size);
+    // Without a sigma, the library's default for the cell size.
+    return sigma > 0 ? PSOR::segment_objects(s.points, at, np.edge_sigma(sigma)) : PSOR::segment_objects(s.points, at, np);
   }
-  // The library's defaults (segment_objects.h).
-  static double default_weight() { return PSI::Segmentation_options().background_weight; }
-  static double default_max_cut() { return PSI::Segmentation_options().maximum_cut; }
-  static std::size_t default_neighbors() { return PSI::Segmentation_options().neighbors; }
-  static std::size_t default_graph_size() { return PSI::Segmentation_options().maximum_nodes; }
 };
 
 SAS::Scanned_objects make_street(std::uint64_t seed, std::size_t points, double length, std::size_t threads)

@@ -134,6 +134,7 @@ def parameter_blocks(comment):
 def function_readers(source_dir):
     """parameter -> [(package, function, description, default)], in the order of the packages."""
     readers = {}
+    structs = options_structs(source_dir)
     for package in PACKAGES:
         directory = os.path.join(source_dir, "include", "CGAL", package)
         if not os.path.isdir(directory):
@@ -150,13 +151,57 @@ def function_readers(source_dir):
                     continue
                 for names, block in parameter_blocks(comment):
                     description = command_argument(block, "cgalParamDescription")
-                    default = command_argument(block, "cgalParamDefault")
+                    default = resolve_default(command_argument(block, "cgalParamDefault"), structs)
                     for parameter in names:
                         entry = (package, entity, is_function, description, default)
                         known = readers.setdefault(parameter, [])
                         if all(e[:3] != entry[:3] for e in known):
                             known.append(entry)
     return readers
+
+
+def options_structs(source_dir):
+    """struct name -> (base struct name or None, {member: initializer}) for the public options
+    structs (`*_options`) of the packages: where the defaults are written."""
+    structs = {}
+    for package in PACKAGES:
+        directory = os.path.join(source_dir, "include", "CGAL", package)
+        if not os.path.isdir(directory):
+            continue
+        for name in sorted(os.listdir(directory)):
+            if not name.endswith(".h"):
+                continue
+            text = read(os.path.join(directory, name))
+            for m in re.finditer(r"\bstruct\s+(\w+_options)\s*(?::\s*(?:public\s+)?([\w:]+))?\s*\{", text):
+                close = matching_brace(text, m.end() - 1)
+                body = re.sub(r"//[^\n]*", "", text[m.end():close])
+                members = {}
+                for d in re.finditer(r"(\w+)\s*=\s*([^;]+);", body):
+                    members[d.group(1)] = " ".join(d.group(2).split())
+                base = m.group(2).split("::")[-1] if m.group(2) else None
+                structs[m.group(1)] = (base, members)
+    # The Core's shared defaults (CGAL/Shape_analysis/defaults.h), which initializers may name.
+    core = os.path.join(source_dir, "include", "CGAL", "Shape_analysis", "defaults.h")
+    if os.path.exists(core):
+        for d in re.finditer(r"constexpr\s+[\w:]+\s+(\w+)\s*=\s*([^;]+);", read(core)):
+            structs.setdefault("", (None, {}))[1]["CGAL::Shape_analysis::" + d.group(1)] = d.group(2).strip()
+    return structs
+
+
+def resolve_default(default, structs):
+    """A default given as `Some_options::member` shown with its value, read from the struct."""
+    m = re.fullmatch(r"\s*`?(\w+_options)::(\w+)`?\s*", default or "")
+    if not m:
+        return default
+    struct, member = m.group(1), m.group(2)
+    while struct in structs:
+        base, members = structs[struct]
+        if member in members:
+            value = members[member]
+            value = structs.get("", (None, {}))[1].get(value, value)  # a Core constant's value
+            return "`%s` (`%s::%s`)" % (value, m.group(1), member)
+        struct = base
+    return default
 
 
 def tags_read(source_dir, tag_to_name):

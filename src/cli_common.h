@@ -7,6 +7,8 @@
 // Shared pieces of the `shape_analysis` subcommands: reading meshes with their face order kept,
 // writing outputs atomically (all or nothing), colours, reports, progress.
 
+#include <CGAL/Consistent_segmentation/Consistent_segmentation_options.h>
+#include <CGAL/Consistent_segmentation/Hierarchical_segmentation_options.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <Shape_analysis_support/Json.h>
@@ -207,10 +209,13 @@ private:
 };
 
 // Registration of the subcommands (one translation unit each).
-void add_segment_command(CLI::App& app, std::function<int()>& run);
+// `defaults`: the library's own unless a test gives others (to show the tool follows them).
+void add_segment_command(CLI::App& app, std::function<int()>& run,
+                         const CGAL::Consistent_segmentation::Hierarchical_segmentation_options& defaults = {});
 void add_register_command(CLI::App& app, std::function<int()>& run);
 void add_partition_commands(CLI::App& app, std::function<int()>& run); // partition, partition-segment
-void add_coseg_command(CLI::App& app, std::function<int()>& run);
+void add_coseg_command(CLI::App& app, std::function<int()>& run,
+                       const CGAL::Consistent_segmentation::Consistent_segmentation_options& defaults = {});
 void add_symmetry_command(CLI::App& app, std::function<int()>& run); // symmetry detect|symmetrize|enhance|transfer
 void add_points_command(CLI::App& app, std::function<int()>& run);   // points scene|background
 void add_points_segment_commands(CLI::App* points, std::function<int()>& run); // points segment|evaluate

@@ -7,6 +7,7 @@
 
 #include "cli_common.h"
 
+#include <CGAL/Consistent_segmentation/Consistent_segmentation_options.h>
 #include <CGAL/Consistent_segmentation/consistent_segmentation.h>
 
 #include <algorithm>
@@ -25,25 +26,14 @@ namespace {
 namespace fs = std::filesystem;
 namespace CS = CGAL::Consistent_segmentation;
 
+// The files and switches of the command; the segmentation's options with the library's defaults.
 struct Coseg_command_options
 {
   std::vector<std::string> inputs;
   std::string output_dir, report, symmetry_plane;
   std::vector<std::string> known, prior; // MESH=FILE.seg
   bool symmetric = false;                 // --symmetry-plane given
-  std::size_t segments = 8;
-  std::size_t oversegments = 20;
-  std::size_t points = 1000;
-  std::size_t partners = 4;
-  double adjacency_exponent = 0.1;
-  double normal_threshold = 0.3;
-  double correspondence_distance = 0.2;
-  double concavity_exponent = 10;
-  double prior_factor = 10;
-  double link_distance = 0.1;
-  double link_factor = 0.01;
-  unsigned int seed = 0;
-  std::size_t threads = 0;
+  CS::Consistent_segmentation_options coseg;
   bool no_refinement = false;
   bool quiet = false;
   bool verbose = false;
@@ -291,28 +281,30 @@ int run_coseg(const Coseg_command_options& o)
       prior_maps.push_back(CGAL::make_property_map(prior[i]));
   }
 
+  const CS::Consistent_segmentation_options& co = o.coseg;
+  const bool boundary_refinement = co.boundary_refinement && !o.no_refinement;
   if(symmetric)
     progress.stage("segmenting " + std::to_string(num_faces(meshes[0])) +
-                   " faces symmetrically into " + std::to_string(o.segments) + " segments");
+                   " faces symmetrically into " + std::to_string(co.number_of_segments) + " segments");
   else
     progress.stage("segmenting " + std::to_string(m) + " meshes consistently into " +
-                   std::to_string(o.segments) + " segments (" + std::to_string(o.oversegments) +
-                   " over-segments each)");
+                   std::to_string(co.number_of_segments) + " segments (" +
+                   std::to_string(co.number_of_oversegments) + " over-segments each)");
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
-  const auto np = CS::parameters::number_of_segments(o.segments)
-                    .number_of_oversegments(o.oversegments)
-                    .adjacency_exponent(o.adjacency_exponent)
-                    .number_of_points(o.points)
-                    .number_of_partners(o.partners)
-                    .normal_threshold(o.normal_threshold)
-                    .correspondence_distance(o.correspondence_distance)
-                    .concavity_exponent(o.concavity_exponent)
-                    .prior_boundary_factor(o.prior_factor)
-                    .component_link_distance(o.link_distance)
-                    .component_link_factor(o.link_factor)
-                    .boundary_refinement(!o.no_refinement)
-                    .random_seed(o.seed)
-                    .number_of_threads(o.threads)
+  const auto np = CS::parameters::number_of_segments(co.number_of_segments)
+                    .number_of_oversegments(co.number_of_oversegments)
+                    .adjacency_exponent(co.adjacency_exponent)
+                    .number_of_points(co.number_of_points)
+                    .number_of_partners(co.number_of_partners)
+                    .normal_threshold(co.normal_threshold)
+                    .correspondence_distance(co.correspondence_distance)
+                    .concavity_exponent(co.concavity_exponent)
+                    .prior_boundary_factor(co.prior_boundary_factor)
+                    .component_link_distance(co.component_link_distance)
+                    .component_link_factor(co.component_link_factor)
+                    .boundary_refinement(boundary_refinement)
+                    .random_seed(co.random_seed)
+                    .number_of_threads(co.number_of_threads)
                     .progress_callback(on_progress);
   Stopwatch segmenting;
   CS::Consistent_segmentation_result r;
@@ -371,20 +363,22 @@ int run_coseg(const Coseg_command_options& o)
       meshes_report.push_back(entry);
     }
     report["meshes"] = meshes_report;
+    // The options as the library's named parameters.
     Json parameters = Json::object();
-    parameters["segments"] = o.segments;
-    parameters["oversegments"] = o.oversegments;
-    parameters["points"] = o.points;
-    parameters["partners"] = o.partners;
-    parameters["adjacency_exponent"] = o.adjacency_exponent;
-    parameters["normal_threshold"] = o.normal_threshold;
-    parameters["correspondence_distance"] = o.correspondence_distance;
-    parameters["concavity_exponent"] = o.concavity_exponent;
-    parameters["prior_factor"] = o.prior_factor;
-    parameters["link_distance"] = o.link_distance;
-    parameters["link_factor"] = o.link_factor;
-    parameters["boundary_refinement"] = !o.no_refinement;
-    parameters["seed"] = o.seed;
+    parameters["number_of_segments"] = co.number_of_segments;
+    parameters["number_of_oversegments"] = co.number_of_oversegments;
+    parameters["number_of_points"] = co.number_of_points;
+    parameters["number_of_partners"] = co.number_of_partners;
+    parameters["adjacency_exponent"] = co.adjacency_exponent;
+    parameters["normal_threshold"] = co.normal_threshold;
+    parameters["correspondence_distance"] = co.correspondence_distance;
+    parameters["concavity_exponent"] = co.concavity_exponent;
+    parameters["prior_boundary_factor"] = co.prior_boundary_factor;
+    parameters["component_link_distance"] = co.component_link_distance;
+    parameters["component_link_factor"] = co.component_link_factor;
+    parameters["boundary_refinement"] = boundary_refinement;
+    parameters["random_seed"] = co.random_seed;
+    parameters["number_of_threads"] = co.number_of_threads;
     parameters["symmetry_plane"] =
       symmetric ? Json(std::vector<double>(plane.begin(), plane.end())) : Json();
     report["parameters"] = parameters;
@@ -413,9 +407,12 @@ int run_coseg(const Coseg_command_options& o)
 
 } // namespace
 
-void add_coseg_command(CLI::App& app, std::function<int()>& run)
+void add_coseg_command(CLI::App& app, std::function<int()>& run,
+                       const CS::Consistent_segmentation_options& defaults)
 {
   auto options = std::make_shared<Coseg_command_options>();
+  options->coseg = defaults;
+  CS::Consistent_segmentation_options& co = options->coseg;
   CLI::App* cmd = app.add_subcommand(
     "coseg",
     "Segment a set of triangle meshes consistently (the same segment id for the same part in "
@@ -428,10 +425,10 @@ void add_coseg_command(CLI::App& app, std::function<int()>& run)
     ->required();
   cmd->add_option("--report", options->report,
                   "JSON report (inputs, parameters, seconds, segments per mesh, correspondences)");
-  cmd->add_option("-k,--segments", options->segments, "Number of segments over the whole set")
+  cmd->add_option("-k,--segments", co.number_of_segments, "Number of segments over the whole set")
     ->capture_default_str()
     ->check(CLI::PositiveNumber);
-  cmd->add_option("--oversegments", options->oversegments,
+  cmd->add_option("--oversegments", co.number_of_oversegments,
                   "Number of segments of each mesh before the joint merging")
     ->capture_default_str()
     ->check(CLI::PositiveNumber);
@@ -446,39 +443,39 @@ void add_coseg_command(CLI::App& app, std::function<int()>& run)
   CLI::Option* plane = cmd->add_option("--symmetry-plane", options->symmetry_plane,
                                        "a,b,c,d: segment the one input mesh symmetrically about "
                                        "the plane a x + b y + c z + d = 0");
-  cmd->add_option("--points", options->points,
+  cmd->add_option("--points", co.number_of_points,
                   "Number of points sampled on each mesh for the correspondences (>= 10)")
     ->capture_default_str();
-  cmd->add_option("--partners", options->partners,
+  cmd->add_option("--partners", co.number_of_partners,
                   "Number of best-aligned partners whose correspondences each mesh keeps (twice "
                   "as many are aligned in large sets; 0: every pair)")
     ->capture_default_str();
-  cmd->add_option("--adjacency-exponent", options->adjacency_exponent,
+  cmd->add_option("--adjacency-exponent", co.adjacency_exponent,
                   "Weight in [0, 1] of the mesh edges against the correspondences")
     ->capture_default_str();
-  cmd->add_option("--normal-threshold", options->normal_threshold,
+  cmd->add_option("--normal-threshold", co.normal_threshold,
                   "Least dot product of the normals of two corresponding points, in [-1, 1]")
     ->capture_default_str();
-  cmd->add_option("--correspondence-distance", options->correspondence_distance,
+  cmd->add_option("--correspondence-distance", co.correspondence_distance,
                   "Largest distance of two corresponding points, as a fraction of the bounding-box "
                   "diagonal")
     ->capture_default_str();
-  cmd->add_option("--concavity-exponent", options->concavity_exponent,
+  cmd->add_option("--concavity-exponent", co.concavity_exponent,
                   "Exponent alpha of the concavity weight min((theta/pi)^alpha, 1)")
     ->capture_default_str();
-  cmd->add_option("--prior-factor", options->prior_factor,
+  cmd->add_option("--prior-factor", co.prior_boundary_factor,
                   "Cut-cost divisor on prior boundaries (>= 1)")
     ->capture_default_str();
-  cmd->add_option("--link-distance", options->link_distance,
+  cmd->add_option("--link-distance", co.component_link_distance,
                   "Link faces of different components of a mesh closer than this fraction of its "
                   "bounding-box diagonal")
     ->capture_default_str();
-  cmd->add_option("--link-factor", options->link_factor,
+  cmd->add_option("--link-factor", co.component_link_factor,
                   "Cost of a component link relative to the mean edge cut cost")
     ->capture_default_str();
   cmd->add_flag("--no-refinement", options->no_refinement, "Skip the boundary refinement");
-  cmd->add_option("--seed", options->seed, "Random seed (same seed, same result)")->capture_default_str();
-  cmd->add_option("--threads", options->threads, "Largest number of threads (0: all cores)")
+  cmd->add_option("--seed", co.random_seed, "Random seed (same seed, same result)")->capture_default_str();
+  cmd->add_option("--threads", co.number_of_threads, "Largest number of threads (0: all cores)")
     ->capture_default_str();
   cmd->add_flag("-q,--quiet", options->quiet, "No progress on stderr");
   cmd->add_flag("-v,--verbose", options->verbose,

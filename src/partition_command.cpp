@@ -4,9 +4,13 @@
 // shape_analysis partition IN --method mincut|kmeans|hierarchical --samples N --seed S
 //     --part-size s --output OUT.ply --edge-values OUT.txt --report R.json
 // shape_analysis partition-segment IN --segments K --seg OUT.seg --output OUT.ply --report R.json
+// Every default is the library's (its options structs); the reports echo the options under the
+// named parameters' names.
 
 #include "cli_common.h"
 
+#include <CGAL/Randomized_cuts/Partition_function_options.h>
+#include <CGAL/Randomized_cuts/Segment_with_partition_function_options.h>
 #include <CGAL/Randomized_cuts/partition_function.h>
 #include <CGAL/Randomized_cuts/segment_with_partition_function.h>
 
@@ -24,94 +28,99 @@ namespace {
 
 namespace RC = CGAL::Randomized_cuts;
 
-// What both subcommands sample with.
-struct Sampling_options
+// The files and switches of the subcommands; the library's options with the library's defaults.
+struct Command_options
 {
-  std::string method = "mincut";
-  std::size_t samples = 400;
-  unsigned int seed = 0;
-  double part_size = 0.05;
-  std::size_t clusters = 10;
-  double randomness = 0.02;
-  double tolerance = 0;
-  bool score_weighting = false;
-  std::size_t threads = 0;
-  double concavity_exponent = 10;
   bool quiet = false;
   bool verbose = false;
 };
 
-struct Partition_options : Sampling_options
+struct Partition_options : Command_options
 {
   std::string input, output_ply, edge_values, report;
+  RC::Partition_function_options sampling;
 };
 
-struct Partition_segment_options : Sampling_options
+struct Partition_segment_options : Command_options
 {
   std::string input, output_ply, output_seg, report;
-  std::size_t segments = 8;
+  RC::Segment_with_partition_function_options segmentation;
   bool no_refinement = false;
 };
 
-RC::Sampling_method method_of(const std::string& name)
+// The names of the samplers on the command line.
+const std::map<std::string, RC::Sampling_method> method_names{
+  {"mincut", RC::MIN_CUT}, {"kmeans", RC::K_MEANS}, {"hierarchical", RC::HIERARCHICAL}};
+
+std::string method_name(RC::Sampling_method method)
 {
-  if(name == "mincut")
-    return RC::MIN_CUT;
-  if(name == "kmeans")
-    return RC::K_MEANS;
-  return RC::HIERARCHICAL;
+  for(const auto& m : method_names)
+    if(m.second == method)
+      return m.first;
+  return std::to_string(int(method));
 }
 
-void add_sampling_options(CLI::App* cmd, Sampling_options& o, bool with_method)
+void add_sampling_options(CLI::App* cmd, RC::Partition_function_options& so, Command_options& o,
+                          bool with_method)
 {
   if(with_method)
-    cmd->add_option("--method", o.method, "Sampler: mincut, kmeans or hierarchical")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"mincut", "kmeans", "hierarchical"}));
-  cmd->add_option("-n,--samples", o.samples, "Number of sampled segmentations")
+    cmd->add_option("--method", so.sampling_method, "Sampler: mincut, kmeans or hierarchical")
+      ->type_name("TEXT")
+      ->transform(CLI::Validator(
+        [](std::string& name) -> std::string {
+          const auto m = method_names.find(name);
+          if(m == method_names.end())
+            return name + " not in {mincut,kmeans,hierarchical}";
+          name = std::to_string(int(m->second)); // parsed into the enum
+          return std::string();
+        },
+        "{mincut,kmeans,hierarchical}"))
+      ->default_str(method_name(so.sampling_method));
+  cmd->add_option("-n,--samples", so.number_of_samples, "Number of sampled segmentations")
     ->capture_default_str()
     ->check(CLI::PositiveNumber);
-  cmd->add_option("--seed", o.seed, "Random seed (same seed, same result)")->capture_default_str();
-  cmd->add_option("--part-size", o.part_size,
+  cmd->add_option("--seed", so.random_seed, "Random seed (same seed, same result)")->capture_default_str();
+  cmd->add_option("--part-size", so.part_size,
                   "mincut: part size s of the penalty near the two sampled faces, in (0, 1/6]")
     ->capture_default_str();
   if(with_method) {
-    cmd->add_option("--clusters", o.clusters,
+    cmd->add_option("--clusters", so.number_of_clusters,
                     "kmeans: number of seeds; hierarchical: largest number of segments")
       ->capture_default_str();
-    cmd->add_option("--randomness", o.randomness, "hierarchical: randomness r of the merges")
+    cmd->add_option("--randomness", so.randomness, "hierarchical: randomness r of the merges")
       ->capture_default_str();
   }
-  cmd->add_option("--tolerance", o.tolerance,
+  cmd->add_option("--tolerance", so.convergence_tolerance,
                   "Stop when no edge value changes by more than this over a batch of 64 samples (0: off)")
     ->capture_default_str();
-  cmd->add_flag("--score-weighting", o.score_weighting,
+  cmd->add_flag("--score-weighting", so.score_weighting,
                 "Weight each sample by 1 / its normalized cut (clean cuts count more)");
-  cmd->add_option("--threads", o.threads, "Threads (0: all cores); the result does not depend on it")
+  cmd->add_option("--threads", so.number_of_threads, "Threads (0: all cores); the result does not depend on it")
     ->capture_default_str();
-  cmd->add_option("--concavity-exponent", o.concavity_exponent,
+  cmd->add_option("--concavity-exponent", so.concavity_exponent,
                   "Exponent alpha of the concavity weight min((theta/pi)^alpha, 1)")
     ->capture_default_str();
   cmd->add_flag("-q,--quiet", o.quiet, "No progress on stderr");
   cmd->add_flag("-v,--verbose", o.verbose, "Progress on stderr even when it is not a terminal");
 }
 
-Json sampling_json(const Sampling_options& o, bool with_method)
+// The options the command line sets, under the library's named-parameter names.
+Json sampling_json(const RC::Partition_function_options& so, bool with_method)
 {
   Json p = Json::object();
   if(with_method)
-    p["method"] = o.method;
-  p["samples"] = o.samples;
-  p["seed"] = o.seed;
-  p["part_size"] = o.part_size;
+    p["sampling_method"] = method_name(so.sampling_method);
+  p["number_of_samples"] = so.number_of_samples;
+  p["random_seed"] = so.random_seed;
+  p["part_size"] = so.part_size;
   if(with_method) {
-    p["clusters"] = o.clusters;
-    p["randomness"] = o.randomness;
+    p["number_of_clusters"] = so.number_of_clusters;
+    p["randomness"] = so.randomness;
   }
-  p["tolerance"] = o.tolerance;
-  p["score_weighting"] = o.score_weighting;
-  p["threads"] = o.threads;
-  p["concavity_exponent"] = o.concavity_exponent;
+  p["convergence_tolerance"] = so.convergence_tolerance;
+  p["score_weighting"] = so.score_weighting;
+  p["number_of_threads"] = so.number_of_threads;
+  p["concavity_exponent"] = so.concavity_exponent;
   return p;
 }
 
@@ -197,23 +206,25 @@ int run_partition(const Partition_options& o)
   Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
   Mesh& mesh = input.mesh;
 
-  progress.stage("sampling " + std::to_string(o.samples) + " " + o.method + " segmentations of " +
+  const RC::Partition_function_options& so = o.sampling;
+  progress.stage("sampling " + std::to_string(so.number_of_samples) + " " + method_name(so.sampling_method) +
+                 " segmentations of " +
                  std::to_string(num_faces(mesh)) + " faces");
   std::vector<double> values(num_edges(mesh), 0.0);
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
   Stopwatch sampling;
   const RC::Partition_function_result r = RC::partition_function(
     mesh, CGAL::make_property_map(values),
-    RC::parameters::sampling_method(method_of(o.method))
-      .number_of_samples(o.samples)
-      .random_seed(o.seed)
-      .part_size(o.part_size)
-      .number_of_clusters(o.clusters)
-      .randomness(o.randomness)
-      .convergence_tolerance(o.tolerance)
-      .score_weighting(o.score_weighting)
-      .number_of_threads(o.threads)
-      .concavity_exponent(o.concavity_exponent)
+    RC::parameters::sampling_method(so.sampling_method)
+      .number_of_samples(so.number_of_samples)
+      .random_seed(so.random_seed)
+      .part_size(so.part_size)
+      .number_of_clusters(so.number_of_clusters)
+      .randomness(so.randomness)
+      .convergence_tolerance(so.convergence_tolerance)
+      .score_weighting(so.score_weighting)
+      .number_of_threads(so.number_of_threads)
+      .concavity_exponent(so.concavity_exponent)
       .progress_callback(on_progress));
   const double seconds = sampling.seconds();
   progress.done();
@@ -264,7 +275,7 @@ int run_partition(const Partition_options& o)
   if(!o.report.empty()) {
     Json report = input_report("partition", o.input, input);
     report["edges"] = edge_points.size();
-    report["parameters"] = sampling_json(o, true);
+    report["parameters"] = sampling_json(o.sampling, true);
     report["samples_drawn"] = r.number_of_samples;
     report["converged"] = r.converged;
     report["largest_change"] = r.largest_change;
@@ -295,22 +306,24 @@ int run_partition_segment(const Partition_segment_options& o)
   Mesh& mesh = input.mesh;
   const std::size_t n = input.number_of_input_faces();
 
+  const RC::Segment_with_partition_function_options& so = o.segmentation;
+  const bool refinement = so.boundary_refinement && !o.no_refinement;
   progress.stage("segmenting " + std::to_string(num_faces(mesh)) + " faces into " +
-                 std::to_string(o.segments) + " segments with the partition function");
+                 std::to_string(so.number_of_segments) + " segments with the partition function");
   auto segment_map = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:segment", 0).first;
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
   Stopwatch segmenting;
   const std::size_t k = RC::segment_with_partition_function(
     mesh, segment_map,
-    RC::parameters::number_of_segments(o.segments)
-      .number_of_samples(o.samples)
-      .random_seed(o.seed)
-      .part_size(o.part_size)
-      .convergence_tolerance(o.tolerance)
-      .score_weighting(o.score_weighting)
-      .number_of_threads(o.threads)
-      .concavity_exponent(o.concavity_exponent)
-      .boundary_refinement(!o.no_refinement)
+    RC::parameters::number_of_segments(so.number_of_segments)
+      .number_of_samples(so.number_of_samples)
+      .random_seed(so.random_seed)
+      .part_size(so.part_size)
+      .convergence_tolerance(so.convergence_tolerance)
+      .score_weighting(so.score_weighting)
+      .number_of_threads(so.number_of_threads)
+      .concavity_exponent(so.concavity_exponent)
+      .boundary_refinement(refinement)
       .progress_callback(on_progress));
   const double seconds = segmenting.seconds();
   progress.done();
@@ -323,9 +336,9 @@ int run_partition_segment(const Partition_segment_options& o)
   if(!o.report.empty()) {
     Json report = input_report("partition-segment", o.input, input);
     report["segments"] = k;
-    Json parameters = sampling_json(o, false);
-    parameters["segments"] = o.segments;
-    parameters["boundary_refinement"] = !o.no_refinement;
+    Json parameters = sampling_json(so, false);
+    parameters["number_of_segments"] = so.number_of_segments;
+    parameters["boundary_refinement"] = refinement;
     report["parameters"] = parameters;
     report["segment_faces"] = counts;
     stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(),
@@ -351,7 +364,7 @@ void add_partition_commands(CLI::App& app, std::function<int()>& run)
     cmd->add_option("--edge-values", o->edge_values,
                     "Text file, one line per edge: 'i j value', i < j the input's vertex indices");
     cmd->add_option("--report", o->report, "JSON report (inputs, parameters, seconds, figures)");
-    add_sampling_options(cmd, *o, true);
+    add_sampling_options(cmd, o->sampling, *o, true);
     cmd->callback([o, &run]() { run = [o]() { return run_partition(*o); }; });
   }
   {
@@ -360,7 +373,7 @@ void add_partition_commands(CLI::App& app, std::function<int()>& run)
       "partition-segment",
       "Segment a triangle mesh along its most consistent cuts (partition function, min-cut sampling).");
     cmd->add_option("input", o->input, "Input triangle mesh (.off, .ply, .obj, .stl)")->required();
-    cmd->add_option("-k,--segments", o->segments, "Number of segments")
+    cmd->add_option("-k,--segments", o->segmentation.number_of_segments, "Number of segments")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
     cmd->add_option("-o,--output", o->output_ply,
@@ -369,7 +382,7 @@ void add_partition_commands(CLI::App& app, std::function<int()>& run)
                     "Segment id per face, one per line, in the input's face order");
     cmd->add_option("--report", o->report, "JSON report (inputs, parameters, seconds, figures)");
     cmd->add_flag("--no-refinement", o->no_refinement, "Skip the final boundary refinement");
-    add_sampling_options(cmd, *o, false);
+    add_sampling_options(cmd, o->segmentation, *o, false);
     cmd->callback([o, &run]() { run = [o]() { return run_partition_segment(*o); }; });
   }
 }

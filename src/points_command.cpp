@@ -33,21 +33,15 @@ namespace shape_analysis_cli {
 
 namespace {
 
-namespace PSI = CGAL::Point_set_object_recognition::internal;
 namespace PSOR = CGAL::Point_set_object_recognition;
 namespace SAS = CGAL::Shape_analysis_support;
 
+// The files and switches of the command; the generator's options with its own defaults.
 struct Scene_options
 {
   std::string command = "scene"; // or "generate"
   std::string output, objects, report;
-  double length = 200;
-  std::size_t points = 1000000;
-  std::size_t objects_per_100m = 30;
-  double noise = 0.015;
-  bool airborne = false;
-  std::uint64_t seed = 1;
-  std::size_t threads = 0;
+  SAS::Urban_scene_options scene;
   bool quiet = false, verbose = false;
 };
 
@@ -84,24 +78,16 @@ int run_scene(const Scene_options& o)
     outputs.add_output(o.objects, "ground-truth objects");
   }
   outputs.add_optional_output(o.report, "report");
-  if(!(o.length >= 10 && o.length <= 1e5))
+  const SAS::Urban_scene_options& so = o.scene;
+  if(!(so.street_length >= 10 && so.street_length <= 1e5))
     throw Usage_error("--length must be between 10 and 100000 m");
-  if(o.points < 1000)
+  if(so.target_points < 1000)
     throw Usage_error("--points must be at least 1000");
-  if(!(o.noise >= 0 && o.noise <= 1))
+  if(!(so.range_noise >= 0 && so.range_noise <= 1))
     throw Usage_error("--noise must be between 0 and 1 m");
 
-  SAS::Urban_scene_options so;
-  so.seed = o.seed;
-  so.street_length = o.length;
-  so.objects_per_100m = o.objects_per_100m;
-  so.target_points = o.points;
-  so.range_noise = o.noise;
-  so.airborne = o.airborne;
-  so.number_of_threads = o.threads;
-
   Stopwatch work;
-  progress.stage("building a street of " + std::to_string(int(o.length)) + " m");
+  progress.stage("building a street of " + std::to_string(int(so.street_length)) + " m");
   const SAS::Urban_scene scene = SAS::make_urban_scene(so);
   progress.stage("scanning " + std::to_string(scene.objects.size()) + " objects, " +
                  std::to_string(scene.triangles.size()) + " triangles");
@@ -141,12 +127,12 @@ int run_scene(const Scene_options& o)
     Json report = Json::object();
     report["command"] = "points " + o.command;
     Json parameters = Json::object();
-    parameters["length"] = o.length;
-    parameters["points"] = o.points;
-    parameters["objects_per_100m"] = o.objects_per_100m;
-    parameters["noise"] = o.noise;
-    parameters["airborne"] = o.airborne;
-    parameters["seed"] = o.seed;
+    parameters["length"] = so.street_length;
+    parameters["points"] = so.target_points;
+    parameters["objects_per_100m"] = so.objects_per_100m;
+    parameters["noise"] = so.range_noise;
+    parameters["airborne"] = so.airborne;
+    parameters["seed"] = so.seed;
     report["parameters"] = parameters;
     report["number_of_points"] = scan.points.size();
     report["mobile_points"] = scan.mobile_points;
@@ -166,11 +152,12 @@ int run_scene(const Scene_options& o)
   return 0;
 }
 
+// The files and switches of the command; the background removal's options with the library's
+// defaults.
 struct Background_options
 {
   std::string input, output, report;
-  double cell = 5, threshold = 0.2, isolation = 0.5, spacing = 0.5, extent = 12;
-  std::size_t neighbors = 3;
+  PSOR::Remove_background_options removal;
   bool all = false;
   bool quiet = false, verbose = false;
 };
@@ -193,13 +180,14 @@ int run_background(const Background_options& o)
 
   progress.stage("removing the background of " + std::to_string(points.size()) + " points");
   Stopwatch work;
+  const PSOR::Remove_background_options& ro = o.removal;
   const PSOR::Background_removal_result r = PSOR::remove_background(
-    points, PSOR::parameters::ground_cell_size(o.cell)
-              .ground_threshold(o.threshold)
-              .isolation_radius(o.isolation)
-              .minimum_neighbors(o.neighbors)
-              .component_spacing(o.spacing)
-              .maximum_component_extent(o.extent));
+    points, PSOR::parameters::ground_cell_size(ro.ground_cell_size)
+              .ground_threshold(ro.ground_threshold)
+              .isolation_radius(ro.isolation_radius)
+              .minimum_neighbors(ro.minimum_neighbors)
+              .component_spacing(ro.component_spacing)
+              .maximum_component_extent(ro.maximum_component_extent));
   const double seconds = work.seconds();
 
   outputs.stage(o.output, true, [&](std::ostream& out) {
@@ -242,12 +230,12 @@ int run_background(const Background_options& o)
     report["number_of_points"] = points.size();
     report["local_origin"] = Json(std::vector<double>{read.offset[0], read.offset[1], read.offset[2]});
     Json parameters = Json::object();
-    parameters["ground_cell_size"] = o.cell;
-    parameters["ground_threshold"] = o.threshold;
-    parameters["isolation_radius"] = o.isolation;
-    parameters["minimum_neighbors"] = o.neighbors;
-    parameters["component_spacing"] = o.spacing;
-    parameters["maximum_component_extent"] = o.extent;
+    parameters["ground_cell_size"] = ro.ground_cell_size;
+    parameters["ground_threshold"] = ro.ground_threshold;
+    parameters["isolation_radius"] = ro.isolation_radius;
+    parameters["minimum_neighbors"] = ro.minimum_neighbors;
+    parameters["component_spacing"] = ro.component_spacing;
+    parameters["maximum_component_extent"] = ro.maximum_component_extent;
     report["parameters"] = parameters;
     report["ground_points"] = r.number_of_ground_points;
     report["isolated_points"] = r.number_of_isolated_points;
@@ -263,12 +251,28 @@ int run_background(const Background_options& o)
   return 0;
 }
 
+// The names of the localization methods on the command line ('components' and 'mean-shift' are
+// accepted too).
+const std::vector<std::string> localization_method_names{"nc", "cc", "meanshift", "image"};
+
+// The command-line name of a localization method.
+std::string localization_method_name(PSOR::Localization_method m)
+{
+  for(const std::string& name : localization_method_names)
+    if(localization_method(name) == m)
+      return name;
+  return "cc";
+}
+
+// The files and switches of the command; the localization's options with the library's
+// defaults (the method by its command-line name).
 struct Locate_options
 {
-  std::string input, output, truth, report, method = "nc";
-  double spacing = 0.3, tallest = 12, radius = 1, shift_radius = 2, cell = 0.15, cut_threshold = 0.002,
-         sigma = 0.2, image_threshold = 0.02;
-  std::size_t minimum = 10, truth_points = 10, threads = 0;
+  std::string input, output, truth, report;
+  PSOR::Locate_objects_options localization;
+  std::string method = localization_method_name(localization.localization_method);
+  double radius = 1;            // of evaluate_locations()
+  std::size_t truth_points = 10;
   bool quiet = false, verbose = false;
 };
 
@@ -326,17 +330,19 @@ int run_locate(const Locate_options& o)
   const double background_seconds = work.seconds();
   progress.stage("locating objects among " + std::to_string(foreground.size()) + " points");
   Stopwatch locating;
+  PSOR::Locate_objects_options lo = o.localization;
+  lo.localization_method = localization_method(o.method);
   const PSOR::Localization_result r = PSOR::locate_objects(
-    foreground, PSOR::parameters::localization_method(localization_method(o.method))
-                  .mean_shift_radius(o.shift_radius)
-                  .component_spacing(o.spacing)
-                  .minimum_cluster_size(o.minimum)
-                  .maximum_cluster_height(o.tallest)
-                  .localization_cell_size(o.cell)
-                  .normalized_cut_threshold(o.cut_threshold)
-                  .height_image_sigma(o.sigma)
-                  .height_image_threshold(o.image_threshold)
-                  .number_of_threads(o.threads));
+    foreground, PSOR::parameters::localization_method(lo.localization_method)
+                  .mean_shift_radius(lo.mean_shift_radius)
+                  .component_spacing(lo.component_spacing)
+                  .minimum_cluster_size(lo.minimum_cluster_size)
+                  .maximum_cluster_height(lo.maximum_cluster_height)
+                  .localization_cell_size(lo.localization_cell_size)
+                  .normalized_cut_threshold(lo.normalized_cut_threshold)
+                  .height_image_sigma(lo.height_image_sigma)
+                  .height_image_threshold(lo.height_image_threshold)
+                  .number_of_threads(lo.number_of_threads));
   const double locate_seconds = locating.seconds();
   const double seconds = work.seconds();
   std::vector<PSOR::Object_location> located = r.locations;
@@ -383,15 +389,16 @@ int run_locate(const Locate_options& o)
     report["background_removed"] = scan;
     report["foreground_points"] = foreground.size();
     Json parameters = Json::object();
-    parameters["method"] = o.method;
-    parameters["mean_shift_radius"] = o.shift_radius;
-    parameters["component_spacing"] = o.spacing;
-    parameters["minimum_cluster_size"] = o.minimum;
-    parameters["maximum_cluster_height"] = o.tallest;
-    parameters["localization_cell_size"] = o.cell;
-    parameters["normalized_cut_threshold"] = o.cut_threshold;
-    parameters["height_image_sigma"] = o.sigma;
-    parameters["height_image_threshold"] = o.image_threshold;
+    parameters["localization_method"] = localization_method_name(lo.localization_method);
+    parameters["mean_shift_radius"] = lo.mean_shift_radius;
+    parameters["component_spacing"] = lo.component_spacing;
+    parameters["minimum_cluster_size"] = lo.minimum_cluster_size;
+    parameters["maximum_cluster_height"] = lo.maximum_cluster_height;
+    parameters["localization_cell_size"] = lo.localization_cell_size;
+    parameters["normalized_cut_threshold"] = lo.normalized_cut_threshold;
+    parameters["height_image_sigma"] = lo.height_image_sigma;
+    parameters["height_image_threshold"] = lo.height_image_threshold;
+    parameters["number_of_threads"] = lo.number_of_threads;
     report["parameters"] = parameters;
     report["clusters"] = r.number_of_clusters;
     report["locations"] = r.locations.size();
@@ -514,13 +521,14 @@ void add_points_command(CLI::App& app, std::function<int()>& run)
     scene->add_option(name == "generate" ? "--truth" : "--objects", s->objects,
                       "The ground-truth objects (.json: id, class, location, height, bbox, scanned_points)");
     scene->add_option("--report", s->report, "JSON report (parameters, counts, seconds)");
-    scene->add_option("--length", s->length, "Length of the street in metres")->capture_default_str();
-    scene->add_option("--points", s->points, "Number of mobile LIDAR points wanted (roughly)")->capture_default_str();
-    scene->add_option("--objects-per-100m", s->objects_per_100m, "Objects per 100 m of street")->capture_default_str();
-    scene->add_option("--noise", s->noise, "Standard deviation of the range noise in metres")->capture_default_str();
-    scene->add_flag("--airborne", s->airborne, "Add an airborne pass (points on a 0.5 m grid from above)");
-    scene->add_option("--seed", s->seed, "Random seed (same seed, same scene)")->capture_default_str();
-    scene->add_option("--threads", s->threads, "Largest number of threads (0: all cores)")->capture_default_str();
+    SAS::Urban_scene_options& so = s->scene;
+    scene->add_option("--length", so.street_length, "Length of the street in metres")->capture_default_str();
+    scene->add_option("--points", so.target_points, "Number of mobile LIDAR points wanted (roughly)")->capture_default_str();
+    scene->add_option("--objects-per-100m", so.objects_per_100m, "Objects per 100 m of street")->capture_default_str();
+    scene->add_option("--noise", so.range_noise, "Standard deviation of the range noise in metres")->capture_default_str();
+    scene->add_flag("--airborne", so.airborne, "Add an airborne pass (points on a grid from above)");
+    scene->add_option("--seed", so.seed, "Random seed (same seed, same scene)")->capture_default_str();
+    scene->add_option("--threads", so.number_of_threads, "Largest number of threads (0: all cores)")->capture_default_str();
     scene->add_flag("-q,--quiet", s->quiet, "No progress on stderr");
     scene->add_flag("-v,--verbose", s->verbose, "Progress on stderr even when it is not a terminal");
     scene->callback([s, &run]() { run = [s]() { return run_scene(*s); }; });
@@ -538,15 +546,18 @@ void add_points_command(CLI::App& app, std::function<int()>& run)
     ->required();
   background->add_option("--report", b->report, "JSON report (counts, local origin, seconds)");
   background->add_flag("--all", b->all, "Write every point with its kind (0 kept, 1 ground, 2 isolated, 3 large component)");
-  background->add_option("--cell", b->cell, "Side of the ground grid's cells (m)")->capture_default_str();
-  background->add_option("--ground-threshold", b->threshold, "Points less than this above the ground are ground (m)")
+  PSOR::Remove_background_options& ro = b->removal;
+  background->add_option("--cell", ro.ground_cell_size, "Side of the ground grid's cells (m)")->capture_default_str();
+  background->add_option("--ground-threshold", ro.ground_threshold, "Points less than this above the ground are ground (m)")
     ->capture_default_str();
-  background->add_option("--isolation-radius", b->isolation, "Side of the voxels where neighbours are counted (m)")
+  background->add_option("--isolation-radius", ro.isolation_radius, "Side of the voxels where neighbours are counted (m)")
     ->capture_default_str();
-  background->add_option("--min-neighbors", b->neighbors, "Fewer neighbours: isolated")->capture_default_str();
-  background->add_option("--spacing", b->spacing, "Side of the voxels of the connected components (m)")
+  background->add_option("--min-neighbors", ro.minimum_neighbors, "Fewer neighbours: isolated")->capture_default_str();
+  background->add_option("--spacing", ro.component_spacing,
+                         "Side of the voxels of the connected components (m; not the --spacing of 'points locate')")
     ->capture_default_str();
-  background->add_option("--max-extent", b->extent, "Components with a wider horizontal extent are removed (m)")
+  background->add_option("--max-extent", ro.maximum_component_extent,
+                         "Components with a wider horizontal extent are removed (m)")
     ->capture_default_str();
   background->add_flag("-q,--quiet", b->quiet, "No progress on stderr");
   background->add_flag("-v,--verbose", b->verbose, "Progress on stderr even when it is not a terminal");
@@ -573,21 +584,23 @@ void add_points_command(CLI::App& app, std::function<int()>& run)
                      "'components' and 'mean-shift' are accepted too")
     ->capture_default_str()
     ->check(CLI::IsMember({"nc", "cc", "meanshift", "image", "components", "mean-shift"}));
-  locate->add_option("--shift-radius", l->shift_radius, "Radius of the mean shift's kernel (m)")->capture_default_str();
-  locate->add_option("--spacing", l->spacing, "Side of the voxels whose contact makes clusters (cc, m)")
+  PSOR::Locate_objects_options& lo = l->localization;
+  locate->add_option("--shift-radius", lo.mean_shift_radius, "Radius of the mean shift's kernel (m)")->capture_default_str();
+  locate->add_option("--spacing", lo.component_spacing,
+                     "Side of the voxels whose contact makes clusters (cc, m; not the --spacing of 'points background')")
     ->capture_default_str();
-  locate->add_option("--cell", l->cell, "Side of the voxels (nc) and of the height image's cells (image), m")
+  locate->add_option("--cell", lo.localization_cell_size, "Side of the voxels (nc) and of the height image's cells (image), m")
     ->capture_default_str();
-  locate->add_option("--cut-threshold", l->cut_threshold, "Normalized cut below which clusters stay apart (nc)")
+  locate->add_option("--cut-threshold", lo.normalized_cut_threshold, "Normalized cut below which clusters stay apart (nc)")
     ->capture_default_str();
-  locate->add_option("--sigma", l->sigma, "Smaller Gaussian of the difference of Gaussians (image, m)")
+  locate->add_option("--sigma", lo.height_image_sigma, "Smaller Gaussian of the difference of Gaussians (image, m)")
     ->capture_default_str();
-  locate->add_option("--image-threshold", l->image_threshold, "Response of an object's cells (image, m)")
+  locate->add_option("--image-threshold", lo.height_image_threshold, "Response of an object's cells (image, m)")
     ->capture_default_str();
-  locate->add_option("--min-points", l->minimum, "Smaller clusters are rejected")->capture_default_str();
-  locate->add_option("--max-height", l->tallest, "Taller clusters are rejected (m)")->capture_default_str();
+  locate->add_option("--min-points", lo.minimum_cluster_size, "Smaller clusters are rejected")->capture_default_str();
+  locate->add_option("--max-height", lo.maximum_cluster_height, "Taller clusters are rejected (m)")->capture_default_str();
   locate->add_option("--radius", l->radius, "Largest horizontal distance of a correct location (m)")->capture_default_str();
-  locate->add_option("--threads", l->threads, "Largest number of threads (0: all cores)")->capture_default_str();
+  locate->add_option("--threads", lo.number_of_threads, "Largest number of threads (0: all cores)")->capture_default_str();
   locate->add_flag("-q,--quiet", l->quiet, "No progress on stderr");
   locate->add_flag("-v,--verbose", l->verbose, "Progress on stderr even when it is not a terminal");
   locate->callback([l, &run]() { run = [l]() { return run_locate(*l); }; });

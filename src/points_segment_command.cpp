@@ -38,7 +38,6 @@ namespace shape_analysis_cli {
 namespace {
 
 namespace PSOR = CGAL::Point_set_object_recognition;
-namespace PSI = CGAL::Point_set_object_recognition::internal;
 namespace SAS = CGAL::Shape_analysis_support;
 
 // A location of locations.csv; z is NaN when the file leaves it empty.
@@ -104,13 +103,35 @@ std::vector<Location> read_locations(const std::string& path)
   return r;
 }
 
-// The segmentation method of a command-line name: all, cc, mincut, mincut-auto (the default).
+// The segmentation method of a command-line name: all, cc, mincut, mincut-auto.
 PSOR::Segmentation_method segmentation_method(const std::string& name)
 {
   return name == "all"      ? PSOR::Segmentation_method::ALL_WITHIN_RADIUS
          : name == "cc"     ? PSOR::Segmentation_method::CONNECTED_COMPONENTS
          : name == "mincut" ? PSOR::Segmentation_method::MIN_CUT
                             : PSOR::Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS;
+}
+
+// The command-line names of the segmentation and localization methods.
+const std::vector<std::string> segmentation_method_names{"mincut-auto", "mincut", "cc", "all"};
+const std::vector<std::string> localization_method_names{"nc", "cc", "meanshift", "image"};
+
+// The command-line name of a segmentation method.
+std::string segmentation_method_name(PSOR::Segmentation_method m)
+{
+  for(const std::string& name : segmentation_method_names)
+    if(segmentation_method(name) == m)
+      return name;
+  return "mincut-auto";
+}
+
+// The command-line name of a localization method.
+std::string localization_method_name(PSOR::Localization_method m)
+{
+  for(const std::string& name : localization_method_names)
+    if(localization_method(name) == m)
+      return name;
+  return "cc";
 }
 
 // The report's "objects": per object its location, points, radius, cut and seconds.
@@ -185,11 +206,13 @@ void stage_objects_ply(Output_files& outputs, const std::string& path, const std
   });
 }
 
+// The files and switches of the command; the segmentation's options with the library's defaults
+// (the method by its command-line name).
 struct Segment_options
 {
-  std::string input, locations, output, report, method = "mincut-auto";
-  double radius = 2;
-  std::size_t threads = 0;
+  std::string input, locations, output, report;
+  PSOR::Segment_objects_options segmentation;
+  std::string method = segmentation_method_name(segmentation.segmentation_method);
   bool quiet = false, verbose = false;
 };
 
@@ -203,7 +226,9 @@ int run_segment(const Segment_options& o)
   require_extension(o.output, ".ply", "segmented points");
   outputs.add_output(o.output, "segmented points");
   outputs.add_optional_output(o.report, "report");
-  if(!(o.radius > 0) || !std::isfinite(o.radius))
+  PSOR::Segment_objects_options so = o.segmentation;
+  so.segmentation_method = segmentation_method(o.method);
+  if(!(so.background_radius > 0) || !std::isfinite(so.background_radius))
     throw Usage_error("--radius must be a positive number");
 
   const std::vector<Location> requested = read_locations(o.locations);
@@ -228,7 +253,6 @@ int run_segment(const Segment_options& o)
   for(const Location& l : requested)
     locations.push_back({l[0], l[1], std::isnan(l[2]) ? background.ground.height(l[0], l[1]) : l[2]});
 
-  const PSOR::Segmentation_method method = segmentation_method(o.method);
   progress.stage("segmenting " + std::to_string(locations.size()) + " objects among " + std::to_string(kept.size()) +
                  " points above the ground");
   PSOR::Segmentation_result r;
@@ -236,8 +260,9 @@ int run_segment(const Segment_options& o)
     if(kept.empty())
       throw Cli_error(o.input + ": every point is ground: nothing to segment");
     r = PSOR::segment_objects(kept, locations,
-                              PSOR::parameters::segmentation_method(method).background_radius(o.radius).number_of_threads(
-                                o.threads));
+                              PSOR::parameters::segmentation_method(so.segmentation_method)
+                                .background_radius(so.background_radius)
+                                .number_of_threads(so.number_of_threads));
   }
   const double seconds = work.seconds();
 
@@ -260,9 +285,9 @@ int run_segment(const Segment_options& o)
     report["ground_points"] = background.number_of_ground_points;
     report["points_above_ground"] = kept.size();
     Json parameters = Json::object();
-    parameters["method"] = o.method;
-    parameters["radius"] = o.radius;
-    parameters["threads"] = o.threads;
+    parameters["segmentation_method"] = segmentation_method_name(so.segmentation_method);
+    parameters["background_radius"] = so.background_radius;
+    parameters["number_of_threads"] = so.number_of_threads;
     report["parameters"] = parameters;
     report["seconds_segmentation"] = seconds;
     report["seconds_graph"] = r.preparation_seconds;
@@ -280,12 +305,15 @@ int run_segment(const Segment_options& o)
   return 0;
 }
 
+// The files and switches of the command; the recognition's options with the library's defaults
+// (the methods by their command-line names, the tile origin as given).
 struct Recognize_options
 {
-  std::string input, output, locations, report, method = "nc", segmentation = "mincut-auto";
-  double tile = 100, margin = 10, radius = 2;
-  std::vector<double> origin; // empty: the corner of the bounding box
-  std::size_t threads = 0;
+  std::string input, output, locations, report;
+  PSOR::Recognize_objects_options recognition;
+  std::string method = localization_method_name(recognition.localization_method);
+  std::string segmentation = segmentation_method_name(recognition.segmentation_method);
+  std::vector<double> origin; // empty: none
   bool quiet = false, verbose = false;
 };
 
@@ -302,11 +330,14 @@ int run_recognize(const Recognize_options& o)
     outputs.add_output(o.locations, "locations");
   }
   outputs.add_optional_output(o.report, "report");
-  if(!(o.tile > 0) || !std::isfinite(o.tile))
+  PSOR::Recognize_objects_options ro = o.recognition;
+  ro.localization_method = localization_method(o.method);
+  ro.segmentation_method = segmentation_method(o.segmentation);
+  if(!(ro.tile_size > 0) || !std::isfinite(ro.tile_size))
     throw Usage_error("--tile-size must be a positive number");
-  if(!(o.margin >= 0) || !std::isfinite(o.margin))
+  if(!(ro.tile_margin >= 0) || !std::isfinite(ro.tile_margin))
     throw Usage_error("--tile-margin must be zero or a positive number");
-  if(!(o.radius > 0) || !std::isfinite(o.radius))
+  if(!(ro.background_radius > 0) || !std::isfinite(ro.background_radius))
     throw Usage_error("--radius must be a positive number");
 
   progress.stage("reading " + o.input);
@@ -315,15 +346,15 @@ int run_recognize(const Recognize_options& o)
   const PSOR::Point_set_read_result read = read_scan_to_segment(o.input, points, read_seconds);
 
   std::ostringstream stage;
-  stage << "recognizing objects among " << points.size() << " points, tiles of " << o.tile << " m";
+  stage << "recognizing objects among " << points.size() << " points, tiles of " << ro.tile_size << " m";
   progress.stage(stage.str());
   Stopwatch work;
-  const auto parameters = PSOR::parameters::tile_size(o.tile)
-                            .tile_margin(o.margin)
-                            .localization_method(localization_method(o.method))
-                            .segmentation_method(segmentation_method(o.segmentation))
-                            .background_radius(o.radius)
-                            .number_of_threads(o.threads);
+  const auto parameters = PSOR::parameters::tile_size(ro.tile_size)
+                            .tile_margin(ro.tile_margin)
+                            .localization_method(ro.localization_method)
+                            .segmentation_method(ro.segmentation_method)
+                            .background_radius(ro.background_radius)
+                            .number_of_threads(ro.number_of_threads);
   const PSOR::Object_recognition_result r =
     o.origin.empty() ? PSOR::recognize_objects(points, parameters)
                      : PSOR::recognize_objects(points, parameters.tile_origin(std::array<double, 2>{{o.origin[0], o.origin[1]}}));
@@ -352,14 +383,14 @@ int run_recognize(const Recognize_options& o)
     report["format"] = read.format;
     report["number_of_points"] = points.size();
     Json parameters = Json::object();
-    parameters["tile_size"] = o.tile;
-    parameters["tile_margin"] = o.margin;
+    parameters["tile_size"] = ro.tile_size;
+    parameters["tile_margin"] = ro.tile_margin;
     if(!o.origin.empty())
       parameters["tile_origin"] = Json(o.origin);
-    parameters["method"] = o.method;
-    parameters["segmentation"] = o.segmentation;
-    parameters["radius"] = o.radius;
-    parameters["threads"] = o.threads;
+    parameters["localization_method"] = localization_method_name(ro.localization_method);
+    parameters["segmentation_method"] = segmentation_method_name(ro.segmentation_method);
+    parameters["background_radius"] = ro.background_radius;
+    parameters["number_of_threads"] = ro.number_of_threads;
     report["parameters"] = parameters;
     report["points_per_second"] = seconds > 0 ? double(points.size()) / seconds : 0.0;
     report["largest_tile_points"] = r.largest_tile;
@@ -552,13 +583,15 @@ void add_points_segment_commands(CLI::App* points, std::function<int()>& run)
   segment->add_option("--method", s->method, "mincut-auto (radius 1-5 m chosen per object), mincut, cc or all")
     ->capture_default_str()
     ->check(CLI::IsMember({"mincut-auto", "mincut", "cc", "all"}));
-  segment->add_option("--radius", s->radius, "Background radius of mincut, radius of cc and all (m)")->capture_default_str();
+  segment->add_option("--radius", s->segmentation.background_radius, "Background radius of mincut, radius of cc and all (m)")
+    ->capture_default_str();
   segment->add_option("-o,--output", s->output,
                       "The input's points in input order (.ply) with their properties, 'object' (the 0-based row "
                       "of the location, -1 for none) and 'ground' (1: left out as ground)")
     ->required();
   segment->add_option("--report", s->report, "JSON report (seconds; per object: points, radius, cut, seconds)");
-  segment->add_option("--threads", s->threads, "Largest number of threads (0: all cores)")->capture_default_str();
+  segment->add_option("--threads", s->segmentation.number_of_threads, "Largest number of threads (0: all cores)")
+    ->capture_default_str();
   segment->add_flag("-q,--quiet", s->quiet, "No progress on stderr");
   segment->add_flag("-v,--verbose", s->verbose, "Progress on stderr even when it is not a terminal");
   segment->callback([s, &run]() { run = [s]() { return run_segment(*s); }; });
@@ -573,8 +606,9 @@ void add_points_segment_commands(CLI::App* points, std::function<int()>& run)
                         "of the location in --locations, -1 for none) and 'ground' (1: ground)")
     ->required();
   recognize->add_option("--locations", g->locations, "The locations found (.csv: a header line x,y,z, then one per line)");
-  recognize->add_option("--tile-size", g->tile, "Side of the square tiles (m)")->capture_default_str();
-  recognize->add_option("--tile-margin", g->margin, "Band around a tile whose points it is processed with (m)")
+  PSOR::Recognize_objects_options& ro = g->recognition;
+  recognize->add_option("--tile-size", ro.tile_size, "Side of the square tiles (m)")->capture_default_str();
+  recognize->add_option("--tile-margin", ro.tile_margin, "Band around a tile whose points it is processed with (m)")
     ->capture_default_str();
   recognize->add_option("--tile-origin", g->origin,
                         "A corner of the tiles' grid, x,y (default: the corner of the bounding box); separate runs "
@@ -587,9 +621,11 @@ void add_points_segment_commands(CLI::App* points, std::function<int()>& run)
   recognize->add_option("--segmentation", g->segmentation, "mincut-auto (radius 1-5 m chosen per object), mincut, cc or all")
     ->capture_default_str()
     ->check(CLI::IsMember({"mincut-auto", "mincut", "cc", "all"}));
-  recognize->add_option("--radius", g->radius, "Background radius of mincut, radius of cc and all (m)")->capture_default_str();
+  recognize->add_option("--radius", ro.background_radius, "Background radius of mincut, radius of cc and all (m)")
+    ->capture_default_str();
   recognize->add_option("--report", g->report, "JSON report (seconds, points per second, tiles; per object: location, points, radius, cut, seconds)");
-  recognize->add_option("--threads", g->threads, "Largest number of threads (0: all cores)")->capture_default_str();
+  recognize->add_option("--threads", ro.number_of_threads, "Largest number of threads (0: all cores)")
+    ->capture_default_str();
   recognize->add_flag("-q,--quiet", g->quiet, "No progress on stderr");
   recognize->add_flag("-v,--verbose", g->verbose, "Progress on stderr even when it is not a terminal");
   recognize->callback([g, &run]() { run = [g]() { return run_recognize(*g); }; });

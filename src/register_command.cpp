@@ -22,15 +22,11 @@ namespace {
 
 namespace RC = CGAL::Randomized_cuts;
 
+// The files and switches of the command; the registration's options with the library's defaults.
 struct Register_options
 {
   std::string source, target, output_off, report;
-  std::size_t points = 2000;
-  std::size_t samples = 100;
-  std::size_t iterations = 50;
-  double overlap = 0.9;
-  unsigned int seed = 0;
-  std::size_t threads = 0;
+  RC::Register_meshes_options registration;
   bool no_partition_weighting = false;
   bool quiet = false;
   bool verbose = false;
@@ -40,6 +36,8 @@ int run_register(const Register_options& o)
 {
   Stopwatch total;
   Progress progress("register", o.quiet, o.verbose);
+  const RC::Register_meshes_options& ro = o.registration;
+  const bool weighting = ro.partition_weighting && !o.no_partition_weighting;
 
   // Check every output location before any work, so that a bad path costs nothing.
   Output_files outputs;
@@ -58,17 +56,17 @@ int run_register(const Register_options& o)
 
   progress.stage(std::string("registering ") + std::to_string(num_faces(source.mesh)) + " onto " +
                  std::to_string(num_faces(target.mesh)) + " faces" +
-                 (o.no_partition_weighting ? " (uniform sampling)"
-                                           : " (partition functions of " +
-                                               std::to_string(o.samples) + " samples)"));
+                 (!weighting ? " (uniform sampling)"
+                             : " (partition functions of " + std::to_string(ro.number_of_samples) +
+                                 " samples)"));
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
-  const auto np = RC::parameters::number_of_points(o.points)
-                    .number_of_samples(o.samples)
-                    .number_of_iterations(o.iterations)
-                    .overlap(o.overlap)
-                    .random_seed(o.seed)
-                    .number_of_threads(o.threads)
-                    .partition_weighting(!o.no_partition_weighting)
+  const auto np = RC::parameters::number_of_points(ro.number_of_points)
+                    .number_of_samples(ro.number_of_samples)
+                    .number_of_iterations(ro.number_of_iterations)
+                    .overlap(ro.overlap)
+                    .random_seed(ro.random_seed)
+                    .number_of_threads(ro.number_of_threads)
+                    .partition_weighting(weighting)
                     .progress_callback(on_progress);
   Stopwatch registering;
   const RC::Registration_result<Kernel> r = RC::register_meshes(source.mesh, target.mesh, np);
@@ -92,13 +90,15 @@ int run_register(const Register_options& o)
     report["command"] = "register";
     add_input_report(report, "source", o.source, source);
     add_input_report(report, "target", o.target, target);
+    // The options as the library's named parameters.
     Json parameters = Json::object();
-    parameters["points"] = o.points;
-    parameters["samples"] = o.samples;
-    parameters["iterations"] = o.iterations;
-    parameters["overlap"] = o.overlap;
-    parameters["seed"] = o.seed;
-    parameters["partition_weighting"] = !o.no_partition_weighting;
+    parameters["number_of_points"] = ro.number_of_points;
+    parameters["number_of_samples"] = ro.number_of_samples;
+    parameters["number_of_iterations"] = ro.number_of_iterations;
+    parameters["overlap"] = ro.overlap;
+    parameters["random_seed"] = ro.random_seed;
+    parameters["number_of_threads"] = ro.number_of_threads;
+    parameters["partition_weighting"] = weighting;
     report["parameters"] = parameters;
     report["rms_distance"] = r.rms_distance;
     report["rms_distance_relative_to_target_diagonal"] = relative_rms;
@@ -132,6 +132,7 @@ int run_register(const Register_options& o)
 void add_register_command(CLI::App& app, std::function<int()>& run)
 {
   auto options = std::make_shared<Register_options>();
+  RC::Register_meshes_options& ro = options->registration;
   CLI::App* cmd = app.add_subcommand(
     "register",
     "Register two triangle meshes: the similarity transform (rotation, scale, translation) that "
@@ -142,20 +143,20 @@ void add_register_command(CLI::App& app, std::function<int()>& run)
                   "SOURCE moved onto TARGET (.off; the input's vertices and faces, in order)");
   cmd->add_option("--report", options->report,
                   "JSON report (inputs, parameters, seconds, RMS distance, scale, 4x4 matrix)");
-  cmd->add_option("--points", options->points, "Number of points sampled on each mesh (>= 10)")
+  cmd->add_option("--points", ro.number_of_points, "Number of points sampled on each mesh (>= 10)")
     ->capture_default_str()
     ->check(CLI::PositiveNumber);
-  cmd->add_option("-n,--samples", options->samples,
+  cmd->add_option("-n,--samples", ro.number_of_samples,
                   "Number of segmentations sampled for each partition function")
     ->capture_default_str()
     ->check(CLI::PositiveNumber);
-  cmd->add_option("--iterations", options->iterations, "Largest number of ICP iterations per restart")
+  cmd->add_option("--iterations", ro.number_of_iterations, "Largest number of ICP iterations per restart")
     ->capture_default_str();
-  cmd->add_option("--overlap", options->overlap,
+  cmd->add_option("--overlap", ro.overlap,
                   "Fraction of the closest point pairs kept by ICP, in (0, 1]")
     ->capture_default_str();
-  cmd->add_option("--seed", options->seed, "Random seed (same seed, same result)")->capture_default_str();
-  cmd->add_option("--threads", options->threads, "Largest number of threads (0: all cores)")
+  cmd->add_option("--seed", ro.random_seed, "Random seed (same seed, same result)")->capture_default_str();
+  cmd->add_option("--threads", ro.number_of_threads, "Largest number of threads (0: all cores)")
     ->capture_default_str();
   cmd->add_flag("--no-partition-weighting", options->no_partition_weighting,
                 "Sample points uniformly by area (no partition function)");

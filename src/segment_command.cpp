@@ -14,15 +14,14 @@ namespace shape_analysis_cli {
 
 namespace {
 
+namespace CS = CGAL::Consistent_segmentation;
+
+// The files and switches of the command; the segmentation's options with the library's defaults.
 struct Segment_options
 {
   std::string input;
-  std::size_t segments = 8;
   std::string output_ply, output_seg, report, prior;
-  double concavity_exponent = 10;
-  double prior_factor = 10;
-  double link_distance = 0.1;
-  double link_factor = 0.01;
+  CS::Hierarchical_segmentation_options segmentation;
   bool no_refinement = false;
   bool quiet = false;
   bool verbose = false;
@@ -30,7 +29,6 @@ struct Segment_options
 
 int run_segment(const Segment_options& o)
 {
-  namespace CS = CGAL::Consistent_segmentation;
   Stopwatch total;
   Progress progress("segment", o.quiet, o.verbose);
 
@@ -61,15 +59,16 @@ int run_segment(const Segment_options& o)
   }
 
   progress.stage("segmenting " + std::to_string(num_faces(mesh)) + " faces into " +
-                 std::to_string(o.segments) + " segments");
+                 std::to_string(o.segmentation.number_of_segments) + " segments");
   auto segment_map = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:segment", 0).first;
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
-  const auto np = CS::parameters::number_of_segments(o.segments)
-                    .concavity_exponent(o.concavity_exponent)
-                    .prior_boundary_factor(o.prior_factor)
-                    .component_link_distance(o.link_distance)
-                    .component_link_factor(o.link_factor)
-                    .boundary_refinement(!o.no_refinement)
+  const CS::Hierarchical_segmentation_options& so = o.segmentation;
+  const auto np = CS::parameters::number_of_segments(so.number_of_segments)
+                    .concavity_exponent(so.concavity_exponent)
+                    .prior_boundary_factor(so.prior_boundary_factor)
+                    .component_link_distance(so.component_link_distance)
+                    .component_link_factor(so.component_link_factor)
+                    .boundary_refinement(so.boundary_refinement && !o.no_refinement)
                     .progress_callback(on_progress);
   Stopwatch segmenting;
   std::size_t k = 0;
@@ -98,14 +97,15 @@ int run_segment(const Segment_options& o)
   if(!o.report.empty()) {
     Json report = input_report("segment", o.input, input);
     report["segments"] = k;
+    // The options as the library's named parameters.
     Json parameters = Json::object();
-    parameters["segments"] = o.segments;
-    parameters["concavity_exponent"] = o.concavity_exponent;
+    parameters["number_of_segments"] = o.segmentation.number_of_segments;
+    parameters["concavity_exponent"] = o.segmentation.concavity_exponent;
     parameters["prior"] = o.prior.empty() ? Json() : Json(o.prior);
-    parameters["prior_factor"] = o.prior_factor;
-    parameters["link_distance"] = o.link_distance;
-    parameters["link_factor"] = o.link_factor;
-    parameters["boundary_refinement"] = !o.no_refinement;
+    parameters["prior_boundary_factor"] = o.segmentation.prior_boundary_factor;
+    parameters["component_link_distance"] = o.segmentation.component_link_distance;
+    parameters["component_link_factor"] = o.segmentation.component_link_factor;
+    parameters["boundary_refinement"] = o.segmentation.boundary_refinement && !o.no_refinement;
     report["parameters"] = parameters;
     report["segment_faces"] = counts;
     report["segment_areas"] = areas;
@@ -121,13 +121,16 @@ int run_segment(const Segment_options& o)
 
 } // namespace
 
-void add_segment_command(CLI::App& app, std::function<int()>& run)
+void add_segment_command(CLI::App& app, std::function<int()>& run,
+                         const CS::Hierarchical_segmentation_options& defaults)
 {
   auto options = std::make_shared<Segment_options>();
+  options->segmentation = defaults;
+  CS::Hierarchical_segmentation_options& so = options->segmentation;
   CLI::App* cmd = app.add_subcommand(
     "segment", "Segment a triangle mesh into parts (hierarchical area-normalized cut).");
   cmd->add_option("input", options->input, "Input triangle mesh (.off, .ply, .obj, .stl)")->required();
-  cmd->add_option("-k,--segments", options->segments, "Number of segments")
+  cmd->add_option("-k,--segments", so.number_of_segments, "Number of segments")
     ->capture_default_str()
     ->check(CLI::PositiveNumber);
   cmd->add_option("-o,--output", options->output_ply,
@@ -137,16 +140,16 @@ void add_segment_command(CLI::App& app, std::function<int()>& run)
   cmd->add_option("--report", options->report, "JSON report (inputs, parameters, seconds, figures)");
   cmd->add_option("--prior", options->prior,
                   "Prior segmentation (.seg) whose boundaries are cheaper to cut");
-  cmd->add_option("--prior-factor", options->prior_factor,
+  cmd->add_option("--prior-factor", so.prior_boundary_factor,
                   "Cut-cost divisor on prior boundaries (>= 1)")
     ->capture_default_str();
-  cmd->add_option("--concavity-exponent", options->concavity_exponent,
+  cmd->add_option("--concavity-exponent", so.concavity_exponent,
                   "Exponent alpha of the concavity weight min((theta/pi)^alpha, 1)")
     ->capture_default_str();
-  cmd->add_option("--link-distance", options->link_distance,
+  cmd->add_option("--link-distance", so.component_link_distance,
                   "Link faces of different components closer than this fraction of the bounding-box diagonal")
     ->capture_default_str();
-  cmd->add_option("--link-factor", options->link_factor,
+  cmd->add_option("--link-factor", so.component_link_factor,
                   "Cost of a component link relative to the mean edge cut cost")
     ->capture_default_str();
   cmd->add_flag("--no-refinement", options->no_refinement, "Skip the boundary refinement");

@@ -21,6 +21,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -31,12 +32,13 @@ namespace {
 namespace SMS = CGAL::Surface_mesh_symmetrization;
 typedef SMS::Symmetry<Kernel> Symmetry;
 
+// The files and switches of the commands; the library's options with the library's defaults.
+// `detection` holds --samples, --seed and --threads (the last one also given to symmetrize() and
+// transfer_vertex_attribute()).
 struct Common_options
 {
   std::string input, report, plane;
-  std::size_t samples = 1000;
-  unsigned int seed = 0;
-  std::size_t threads = 0;
+  SMS::Detect_reflective_symmetries_options detection;
   bool quiet = false;
   bool verbose = false;
 };
@@ -44,20 +46,15 @@ struct Common_options
 struct Detect_options : Common_options
 {
   std::string output_ply;
-  std::size_t max_symmetries = 5;
-  double min_support = 0.1;
 };
 
-struct Symmetrize_options : Common_options
+struct Symmetrize_command_options : Common_options
 {
   std::string output_off, map;
-  std::size_t iterations = 5;
-  std::size_t levels = 0;
-  double final_weight = 100;
-  double target_error = 1e-4;
+  SMS::Symmetrize_options symmetrization;
 };
 
-struct Enhance_options : Symmetrize_options
+struct Enhance_options : Symmetrize_command_options
 {
   double amount = 1;
   std::string symmetric;
@@ -65,8 +62,23 @@ struct Enhance_options : Symmetrize_options
 
 struct Transfer_options : Common_options
 {
-  std::string colors, output_ply, mode = "copy", from = "positive";
+  std::string colors, output_ply;
+  SMS::Transfer_vertex_attribute_options transfer;
 };
+
+// The names of --mode and --from.
+const std::map<std::string, SMS::Transfer_mode> transfer_modes{{"copy", SMS::Transfer_mode::COPY},
+                                                               {"blend", SMS::Transfer_mode::BLEND}};
+const std::map<std::string, int> source_sides{{"positive", 1}, {"negative", -1}};
+
+template <typename Value>
+std::string name_of(const std::map<std::string, Value>& names, Value value)
+{
+  for(const auto& n : names)
+    if(n.second == value)
+      return n.first;
+  return std::string();
+}
 
 void add_common_options(CLI::App* cmd, Common_options& o, bool with_plane)
 {
@@ -74,11 +86,12 @@ void add_common_options(CLI::App* cmd, Common_options& o, bool with_plane)
   if(with_plane)
     cmd->add_option("--plane", o.plane,
                     "Symmetry plane a,b,c,d (a x + b y + c z + d = 0); detected when absent");
-  cmd->add_option("--samples", o.samples, "Number of points sampled for the detection (>= 20)")
+  cmd->add_option("--samples", o.detection.number_of_samples, "Number of points sampled for the detection (>= 20)")
     ->capture_default_str();
-  cmd->add_option("--seed", o.seed, "Random seed of the detection (same seed, same result)")
+  cmd->add_option("--seed", o.detection.random_seed, "Random seed of the detection (same seed, same result)")
     ->capture_default_str();
-  cmd->add_option("--threads", o.threads, "Largest number of threads (0: all cores)")->capture_default_str();
+  cmd->add_option("--threads", o.detection.number_of_threads, "Largest number of threads (0: all cores)")
+    ->capture_default_str();
   cmd->add_flag("-q,--quiet", o.quiet, "No progress on stderr");
   cmd->add_flag("-v,--verbose", o.verbose, "Progress on stderr even when it is not a terminal");
 }
@@ -121,10 +134,11 @@ Symmetry symmetry_of(const Common_options& o, const Mesh& mesh, Progress& progre
   }
   progress.stage("detecting the symmetry plane");
   std::vector<Symmetry> found;
+  const SMS::Detect_reflective_symmetries_options& d = o.detection;
   SMS::detect_reflective_symmetries(mesh, std::back_inserter(found),
-                                    SMS::parameters::number_of_samples(o.samples)
-                                      .random_seed(o.seed)
-                                      .number_of_threads(o.threads)
+                                    SMS::parameters::number_of_samples(d.number_of_samples)
+                                      .random_seed(d.random_seed)
+                                      .number_of_threads(d.number_of_threads)
                                       .maximum_number_of_symmetries(1));
   seconds = watch.seconds();
   if(found.empty())
@@ -293,12 +307,14 @@ int run_detect(const Detect_options& o)
   progress.stage("detecting reflective symmetries of " + std::to_string(num_faces(input.mesh)) + " faces");
   Stopwatch watch;
   std::vector<Symmetry> found;
+  const SMS::Detect_reflective_symmetries_options& d = o.detection;
   SMS::detect_reflective_symmetries(input.mesh, std::back_inserter(found),
-                                    SMS::parameters::number_of_samples(o.samples)
-                                      .random_seed(o.seed)
-                                      .number_of_threads(o.threads)
-                                      .maximum_number_of_symmetries(o.max_symmetries)
-                                      .minimum_support(o.min_support));
+                                    SMS::parameters::number_of_samples(d.number_of_samples)
+                                      .random_seed(d.random_seed)
+                                      .number_of_threads(d.number_of_threads)
+                                      .maximum_number_of_symmetries(d.maximum_number_of_symmetries)
+                                      .minimum_support(d.minimum_support)
+                                      .support_tolerance(d.support_tolerance));
   const double seconds = watch.seconds();
   progress.done();
   if(!o.output_ply.empty()) {
@@ -312,11 +328,14 @@ int run_detect(const Detect_options& o)
   }
   if(!o.report.empty()) {
     Json report = input_report("symmetry detect", o.input, input);
+    // The options as the library's named parameters.
     Json parameters = Json::object();
-    parameters["samples"] = o.samples;
-    parameters["seed"] = o.seed;
-    parameters["max_symmetries"] = o.max_symmetries;
-    parameters["min_support"] = o.min_support;
+    parameters["number_of_samples"] = d.number_of_samples;
+    parameters["random_seed"] = d.random_seed;
+    parameters["maximum_number_of_symmetries"] = d.maximum_number_of_symmetries;
+    parameters["minimum_support"] = d.minimum_support;
+    parameters["support_tolerance"] = d.support_tolerance;
+    parameters["number_of_threads"] = d.number_of_threads;
     report["parameters"] = parameters;
     Json planes = Json::array();
     for(const Symmetry& s : found) {
@@ -338,7 +357,7 @@ int run_detect(const Detect_options& o)
 }
 
 // Symmetrizes `input.mesh` in place; returns the result and the symmetry used.
-SMS::Symmetrization_result<Kernel> symmetrize_input(const Symmetrize_options& o, Input_mesh& input,
+SMS::Symmetrization_result<Kernel> symmetrize_input(const Symmetrize_command_options& o, Input_mesh& input,
                                                     Progress& progress, Symmetry& symmetry,
                                                     double& detect_seconds, bool& detected)
 {
@@ -346,15 +365,40 @@ SMS::Symmetrization_result<Kernel> symmetrize_input(const Symmetrize_options& o,
   progress.stage("symmetrizing " + std::to_string(num_vertices(input.mesh)) + " vertices about the plane " +
                  plane_text(symmetry));
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
+  const SMS::Symmetrize_options& so = o.symmetrization;
   auto result = SMS::symmetrize(input.mesh, std::vector<Symmetry>{symmetry},
-                                SMS::parameters::number_of_iterations(o.iterations)
-                                  .number_of_levels(o.levels)
-                                  .final_symmetry_weight(o.final_weight)
-                                  .target_symmetry_error(o.target_error)
-                                  .number_of_threads(o.threads)
+                                SMS::parameters::number_of_iterations(so.number_of_iterations)
+                                  .shape_weight(so.shape_weight)
+                                  .displacement_weight(so.displacement_weight)
+                                  .number_of_levels(so.number_of_levels)
+                                  .coarsest_level_size(so.coarsest_level_size)
+                                  .symmetry_tolerance(so.symmetry_tolerance)
+                                  .target_symmetry_error(so.target_symmetry_error)
+                                  .final_symmetry_weight(so.final_symmetry_weight)
+                                  .support_weighting(so.support_weighting)
+                                  .number_of_threads(o.detection.number_of_threads)
                                   .progress_callback(on_progress));
   progress.done();
   return result;
+}
+
+// The options of symmetrize() as the library's named parameters (support_weighting: null for the
+// library's choice by the number of symmetries).
+Json symmetrization_parameters(const Symmetrize_command_options& o)
+{
+  const SMS::Symmetrize_options& so = o.symmetrization;
+  Json parameters = Json::object();
+  parameters["number_of_iterations"] = so.number_of_iterations;
+  parameters["shape_weight"] = so.shape_weight;
+  parameters["displacement_weight"] = so.displacement_weight;
+  parameters["number_of_levels"] = so.number_of_levels;
+  parameters["coarsest_level_size"] = so.coarsest_level_size;
+  parameters["symmetry_tolerance"] = so.symmetry_tolerance;
+  parameters["target_symmetry_error"] = so.target_symmetry_error;
+  parameters["final_symmetry_weight"] = so.final_symmetry_weight;
+  parameters["support_weighting"] = so.support_weighting ? Json(*so.support_weighting) : Json();
+  parameters["number_of_threads"] = o.detection.number_of_threads;
+  return parameters;
 }
 
 void add_symmetrization_report(Json& report, const SMS::Symmetrization_result<Kernel>& r,
@@ -370,7 +414,7 @@ void add_symmetrization_report(Json& report, const SMS::Symmetrization_result<Ke
   report["symmetry_errors"] = Json(r.symmetry_errors);
 }
 
-int run_symmetrize(const Symmetrize_options& o)
+int run_symmetrize(const Symmetrize_command_options& o)
 {
   Stopwatch total;
   Progress progress("symmetry symmetrize", o.quiet, o.verbose);
@@ -403,12 +447,7 @@ int run_symmetrize(const Symmetrize_options& o)
   }
   if(!o.report.empty()) {
     Json report = input_report("symmetry symmetrize", o.input, input);
-    Json parameters = Json::object();
-    parameters["iterations"] = o.iterations;
-    parameters["levels"] = o.levels;
-    parameters["final_weight"] = o.final_weight;
-    parameters["target_error"] = o.target_error;
-    report["parameters"] = parameters;
+    report["parameters"] = symmetrization_parameters(o);
     add_symmetrization_report(report, r, symmetry, detected, detect_seconds);
     stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(),
                  {{"mesh", o.output_off}, {"map", o.map}});
@@ -456,6 +495,7 @@ int run_enhance(const Enhance_options& o)
     bool detected = false;
     const auto r = symmetrize_input(o, input, progress, symmetry, detect_seconds, detected);
     symmetric = moved_points(input, input.mesh);
+    report["parameters"] = symmetrization_parameters(o);
     add_symmetrization_report(report, r, symmetry, detected, detect_seconds);
   }
   std::vector<Point_3> enhanced(original.size());
@@ -546,13 +586,15 @@ int run_transfer(const Transfer_options& o)
   auto colour = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:transfer_colour").first;
   for(Mesh::Vertex_index v : mesh.vertices())
     colour[v] = file_colours[input.input_index[input.vertex_point[v]]];
-  progress.stage(std::string(o.mode == "copy" ? "copying" : "blending") + " vertex colours across the plane " +
+  const SMS::Transfer_vertex_attribute_options& to = o.transfer;
+  const bool copy = to.transfer_mode == SMS::Transfer_mode::COPY;
+  const std::string from = name_of(source_sides, to.source_side);
+  progress.stage(std::string(copy ? "copying" : "blending") + " vertex colours across the plane " +
                  plane_text(symmetry));
   SMS::transfer_vertex_attribute(mesh, symmetry, colour,
-                                 SMS::parameters::transfer_mode(o.mode == "copy" ? SMS::Transfer_mode::COPY
-                                                                                 : SMS::Transfer_mode::BLEND)
-                                   .source_side(o.from == "positive" ? 1 : -1)
-                                   .number_of_threads(o.threads));
+                                 SMS::parameters::transfer_mode(to.transfer_mode)
+                                   .source_side(to.source_side)
+                                   .number_of_threads(o.detection.number_of_threads));
   std::vector<CGAL::IO::Color> colours(input.points.size());
   for(std::size_t p = 0; p < input.points.size(); ++p)
     colours[p] = file_colours[input.input_index[p]];
@@ -571,8 +613,12 @@ int run_transfer(const Transfer_options& o)
   if(!o.report.empty()) {
     Json report = input_report("symmetry transfer", o.input, input);
     report["colors"] = colour_file;
-    report["mode"] = o.mode;
-    report["from"] = o.from;
+    // The options as the library's named parameters.
+    Json parameters = Json::object();
+    parameters["transfer_mode"] = name_of(transfer_modes, to.transfer_mode);
+    parameters["source_side"] = to.source_side;
+    parameters["number_of_threads"] = o.detection.number_of_threads;
+    report["parameters"] = parameters;
     report["plane"] = plane_json(symmetry);
     report["plane_detected"] = detected;
     report["seconds_detection"] = detect_seconds;
@@ -580,7 +626,7 @@ int run_transfer(const Transfer_options& o)
     stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(), {{"mesh", o.output_ply}});
   }
   outputs.commit();
-  std::cout << o.input << ": colours " << (o.mode == "copy" ? "copied from the " + o.from + " side" : std::string("blended"))
+  std::cout << o.input << ": colours " << (copy ? "copied from the " + from + " side" : std::string("blended"))
             << " across the plane " << plane_text(symmetry) << " in " << seconds << " s\n";
   return 0;
 }
@@ -603,13 +649,15 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run)
   detect->add_option("-o,--output", d->output_ply,
                      "The mesh with each face coloured by its support for the best plane (.ply, "
                      "float face property 'support')");
-  detect->add_option("--max-symmetries", d->max_symmetries, "Largest number of planes reported")
+  detect->add_option("--max-symmetries", d->detection.maximum_number_of_symmetries,
+                     "Largest number of planes reported")
     ->capture_default_str();
-  detect->add_option("--min-support", d->min_support, "Smallest support fraction of a plane, in [0, 1]")
+  detect->add_option("--min-support", d->detection.minimum_support,
+                     "Smallest support fraction of a plane, in [0, 1]")
     ->capture_default_str();
   detect->callback([d, &run]() { run = [d]() { return run_detect(*d); }; });
 
-  auto s = std::make_shared<Symmetrize_options>();
+  auto s = std::make_shared<Symmetrize_command_options>();
   CLI::App* sym = symmetry->add_subcommand(
     "symmetrize", "Warp the mesh (same vertices and faces) to be symmetric about a plane, "
                   "changing its shape as little as possible.");
@@ -619,15 +667,15 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run)
                   "The symmetric map: per vertex, the face and barycentric coordinates of its mirror point (text)");
   sym->add_option("--report", s->report,
                   "JSON report: plane, symmetry_error_before, symmetry_error_after, distortion, seconds");
-  sym->add_option("--iterations", s->iterations, "Steps of alpha from 0 to 1 on the coarsest level (>= 1)")
+  sym->add_option("--iterations", s->symmetrization.number_of_iterations, "Steps of alpha from 0 to 1 on the coarsest level (>= 1)")
     ->capture_default_str();
-  sym->add_option("--levels", s->levels, "Levels of the multiresolution hierarchy (0: automatic, 1: none)")
+  sym->add_option("--levels", s->symmetrization.number_of_levels, "Levels of the multiresolution hierarchy (0: automatic, 1: none)")
     ->capture_default_str();
-  sym->add_option("--final-weight", s->final_weight,
+  sym->add_option("--final-weight", s->symmetrization.final_symmetry_weight,
                   "Weight of symmetry against shape in the last steps (> 0): larger, less asymmetry and more "
                   "distortion where the two sides have no matching vertices")
     ->capture_default_str();
-  sym->add_option("--target-error", s->target_error,
+  sym->add_option("--target-error", s->symmetrization.target_symmetry_error,
                   "RMS symmetry error (fraction of the diagonal) at which the isometric refinement stops "
                   "(0: no refinement); smaller, more symmetric and more distorted")
     ->capture_default_str();
@@ -643,10 +691,11 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run)
   enhance->add_option("--symmetric", e->symmetric,
                       "The symmetrized mesh written by 'symmetry symmetrize' (no solve: instant)");
   enhance->add_option("--report", e->report, "JSON report");
-  enhance->add_option("--iterations", e->iterations, "As for symmetrize")->capture_default_str();
-  enhance->add_option("--levels", e->levels, "As for symmetrize")->capture_default_str();
-  enhance->add_option("--final-weight", e->final_weight, "As for symmetrize")->capture_default_str();
-  enhance->add_option("--target-error", e->target_error, "As for symmetrize")->capture_default_str();
+  SMS::Symmetrize_options& es = e->symmetrization;
+  enhance->add_option("--iterations", es.number_of_iterations, "As for symmetrize")->capture_default_str();
+  enhance->add_option("--levels", es.number_of_levels, "As for symmetrize")->capture_default_str();
+  enhance->add_option("--final-weight", es.final_symmetry_weight, "As for symmetrize")->capture_default_str();
+  enhance->add_option("--target-error", es.target_symmetry_error, "As for symmetrize")->capture_default_str();
   enhance->callback([e, &run]() { run = [e]() { return run_enhance(*e); }; });
 
   auto t = std::make_shared<Transfer_options>();
@@ -657,13 +706,17 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run)
   transfer->add_option("--colors", t->colors,
                        "PLY with the vertex colours, the same vertices as IN in the same order (default: IN)");
   transfer->add_option("-o,--output", t->output_ply, "The mesh with the transferred vertex colours (.ply)")->required();
-  transfer->add_option("--mode", t->mode, "copy (one side onto the other) or blend (both sides, symmetric)")
-    ->capture_default_str()
-    ->check(CLI::IsMember({"copy", "blend"}));
-  transfer->add_option("--from", t->from,
+  // Bound to the library's options by name (the defaults shown are the library's).
+  transfer->add_option("--mode", t->transfer.transfer_mode,
+                       "copy (one side onto the other) or blend (both sides, symmetric)")
+    ->type_name("TEXT")
+    ->transform(CLI::CheckedTransformer(transfer_modes).description("{copy,blend}"))
+    ->default_str(name_of(transfer_modes, t->transfer.transfer_mode));
+  transfer->add_option("--from", t->transfer.source_side,
                        "copy: the side copied, positive (where the plane's normal points) or negative")
-    ->capture_default_str()
-    ->check(CLI::IsMember({"positive", "negative"}));
+    ->type_name("TEXT")
+    ->transform(CLI::CheckedTransformer(source_sides).description("{positive,negative}"))
+    ->default_str(name_of(source_sides, t->transfer.source_side));
   transfer->add_option("--report", t->report, "JSON report");
   transfer->callback([t, &run]() { run = [t]() { return run_transfer(*t); }; });
 }

@@ -37,7 +37,6 @@ int main(int argc, char** argv)
     for(auto i : ps)
       scan.push_back(ps.point(i));
   } else { // a generated street of 400 m
-    namespace PSI = CGAL::Point_set_object_recognition::internal;
     SAS::Urban_scene_options o;
     o.street_length = 400;
     o.target_points = 1000000;
@@ -45,12 +44,12 @@ int main(int argc, char** argv)
     for(const auto& p : SAS::scan_urban_scene(scene, o).points)
       scan.emplace_back(p.x, p.y, p.z);
   }
-  const double tile = argc > 2 ? std::stod(argv[2]) : 100.0;
+  const double tile = argc > 2 ? std::stod(argv[2]) : PSOR::Recognize_objects_options().tile_size;
   // Ground, background, normalized-cut localization and min-cut segmentation, tile by tile (the
   // tiles in parallel; the result does not depend on the number of threads).
   PSOR::Object_recognition_result r;
   try {
-    r = PSOR::recognize_objects(scan, PSOR::parameters::tile_size(tile).tile_margin(10.0));
+    r = PSOR::recognize_objects(scan, PSOR::parameters::tile_size(tile));
   } catch(const CGAL::Shape_analysis::Bad_input& e) { // an empty cloud, a tile size <= 0, ...
     std::cerr << e.what() << "\n";
     return 1;

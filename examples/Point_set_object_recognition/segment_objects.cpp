@@ -33,7 +33,6 @@ int main(int argc, char** argv)
     for(auto i : ps)
       scan.push_back(ps.point(i));
   } else { // a generated street of 60 m
-    namespace PSI = CGAL::Point_set_object_recognition::internal;
     SAS::Urban_scene_options o;
     o.street_length = 60;
     o.target_points = 200000;

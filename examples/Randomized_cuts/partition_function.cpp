@@ -25,7 +25,8 @@ int main(int argc, char** argv)
   const std::string default_file = CGAL::data_file_path("meshes/elephant.off");
 #endif
   const std::string filename = argc > 1 ? argv[1] : default_file;
-  const std::size_t samples = argc > 2 ? std::strtoul(argv[2], nullptr, 10) : 400;
+  const std::size_t samples =
+    argc > 2 ? std::strtoul(argv[2], nullptr, 10) : RC::Partition_function_options().number_of_samples;
 
   Mesh mesh;
   if(!CGAL::IO::read_polygon_mesh(filename, mesh)) {

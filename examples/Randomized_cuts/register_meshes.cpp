@@ -25,7 +25,8 @@ int main(int argc, char** argv)
   const std::string default_file = CGAL::data_file_path("meshes/elephant.off");
 #endif
   const std::string filename = argc > 1 ? argv[1] : default_file;
-  const std::size_t points = argc > 2 ? std::strtoul(argv[2], nullptr, 10) : 2000;
+  const std::size_t points =
+    argc > 2 ? std::strtoul(argv[2], nullptr, 10) : RC::Register_meshes_options().number_of_points;
 
   Mesh mesh;
   if(!CGAL::IO::read_polygon_mesh(filename, mesh)) {

@@ -23,7 +23,8 @@ int main(int argc, char** argv)
 #endif
   const std::string filename = argc > 1 ? argv[1] : default_file;
   const std::size_t k = argc > 2 ? std::strtoul(argv[2], nullptr, 10) : 6;
-  const std::size_t samples = argc > 3 ? std::strtoul(argv[3], nullptr, 10) : 400;
+  const std::size_t samples =
+    argc > 3 ? std::strtoul(argv[3], nullptr, 10) : RC::Segment_with_partition_function_options().number_of_samples;
 
   Mesh mesh;
   if(!CGAL::IO::read_polygon_mesh(filename, mesh)) {

@@ -14,6 +14,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
+#include <CGAL/Consistent_segmentation/Consistent_segmentation_options.h>
 #include <CGAL/Consistent_segmentation/consistent_segmentation.h>
 #include <CGAL/Consistent_segmentation/hierarchical_segmentation.h>
 #include <Shape_analysis_support/Procedural_furniture.h>
@@ -26,6 +27,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -660,6 +662,38 @@ TEST(Parameters, PolyhedronAndVertexPointMaps)
   const auto ids_b = read_ids(meshes, b);
   for(std::size_t i = 0; i < meshes.size(); ++i)
     EXPECT_GE(SAS::rand_index(ids_a[i], ids_b[i]), 0.98) << "mesh " << i;
+}
+
+// Every member of the options, for comparisons.
+auto option_values(const CS::Consistent_segmentation_options& o)
+{
+  return std::make_tuple(o.number_of_segments, o.concavity_exponent, o.prior_boundary_factor,
+                         o.component_link_distance, o.component_link_factor, o.boundary_refinement,
+                         bool(o.progress_callback), o.number_of_oversegments, o.adjacency_exponent,
+                         o.number_of_points, o.normal_threshold, o.correspondence_distance,
+                         o.number_of_partners, o.random_seed, o.number_of_threads);
+}
+
+// The options read from no named parameters are the struct's defaults, the first stage's those of
+// hierarchical_segmentation(); a named parameter given lands in its member, and only there.
+TEST(Parameters, OptionsFromNamedParameters)
+{
+  const CS::Consistent_segmentation_options defaults;
+  EXPECT_EQ(option_values(CS::consistent_segmentation_options()), option_values(defaults));
+  const CS::Hierarchical_segmentation_options stage_one;
+  EXPECT_EQ(defaults.number_of_segments, stage_one.number_of_segments);
+  EXPECT_EQ(defaults.concavity_exponent, stage_one.concavity_exponent);
+
+  const auto given = CS::consistent_segmentation_options(
+    CS::parameters::number_of_oversegments(7).adjacency_exponent(0.25).random_seed(5u).component_link_factor(0.5)
+      .progress_callback([](double) {}));
+  CS::Consistent_segmentation_options expected;
+  expected.number_of_oversegments = 7;
+  expected.adjacency_exponent = 0.25;
+  expected.random_seed = 5;
+  expected.component_link_factor = 0.5;
+  expected.progress_callback = [](double) {};
+  EXPECT_EQ(option_values(given), option_values(expected));
 }
 
 // ---------------------------------------------------------------------------------------------

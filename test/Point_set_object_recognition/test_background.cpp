@@ -9,6 +9,7 @@
 #include <CGAL/Point_set_3/IO/PLY.h>
 
 #include <Shape_analysis_support/Urban_scene.h>
+#include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
 #include <CGAL/Shape_analysis/internal/Random.h>
 
@@ -268,6 +269,27 @@ TEST(BackgroundRemoval, BadInput)
   // A grid too fine for the extent of the scene: refused, not an allocation failure.
   std::vector<Point> far = {Point(0, 0, 0), Point(1e7, 0, 0)};
   EXPECT_THROW(PSOR::remove_background(far, PSOR::parameters::isolation_radius(0.001)), Bad_input);
+}
+
+// The options come from one place: without named parameters, the struct's defaults; a named
+// parameter given lands in its member.
+TEST(BackgroundRemoval, OptionsFromNamedParameters)
+{
+  const PSOR::Remove_background_options d;
+  const PSOR::Remove_background_options o = PSOR::remove_background_options();
+  EXPECT_EQ(o.ground_cell_size, d.ground_cell_size);
+  EXPECT_EQ(o.ground_threshold, d.ground_threshold);
+  EXPECT_EQ(o.isolation_radius, d.isolation_radius);
+  EXPECT_EQ(o.minimum_neighbors, d.minimum_neighbors);
+  EXPECT_EQ(o.component_spacing, d.component_spacing);
+  EXPECT_EQ(o.maximum_component_extent, d.maximum_component_extent);
+  const PSOR::Remove_background_options g =
+    PSOR::remove_background_options(PSOR::parameters::component_spacing(0.75).minimum_neighbors(7));
+  EXPECT_EQ(g.component_spacing, 0.75);
+  EXPECT_EQ(g.minimum_neighbors, 7u);
+  EXPECT_EQ(g.ground_cell_size, d.ground_cell_size);
+  // Two parameters of the same name, each with its function's default.
+  EXPECT_NE(d.component_spacing, PSOR::Locate_objects_options().component_spacing);
 }
 
 } // namespace

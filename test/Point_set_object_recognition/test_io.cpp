@@ -609,4 +609,20 @@ TEST(DemoData, CgalPointFilesAreRead)
     GTEST_SKIP() << "no CGAL point file (b9_training.ply, kitten.xyz, sphere_20k.xyz, oni.ply) in " << dir;
 }
 
+// The options come from one place: without named parameters, the struct's defaults; a named
+// parameter given lands in its member.
+TEST(ReadPointSet, OptionsFromNamedParameters)
+{
+  const PR::Read_point_set_options d;
+  const PR::Read_point_set_options o = PR::read_point_set_options();
+  EXPECT_EQ(o.shift_to_local_origin, d.shift_to_local_origin);
+  EXPECT_EQ(o.local_origin, d.local_origin);
+  EXPECT_FALSE(o.local_origin.has_value());
+  EXPECT_FALSE(PR::read_point_set_options(PR::parameters::shift_to_local_origin(false)).shift_to_local_origin);
+  const PR::Read_point_set_options g =
+    PR::read_point_set_options(PR::parameters::local_origin(std::array<double, 3>{{100.0, 200.0, 0.0}}));
+  ASSERT_TRUE(g.local_origin.has_value());
+  EXPECT_EQ((*g.local_origin)[1], 200.0);
+}
+
 } // namespace

@@ -295,4 +295,27 @@ TEST(Localization, BadParametersAreRefused)
   EXPECT_TRUE(PSOR::locate_objects(std::vector<Point>(), nc).locations.empty());
 }
 
+// The options come from one place: without named parameters, the struct's defaults; a named
+// parameter given lands in its member.
+TEST(Localization, OptionsFromNamedParameters)
+{
+  const PSOR::Locate_objects_options d;
+  const PSOR::Locate_objects_options o = PSOR::locate_objects_options();
+  EXPECT_EQ(o.localization_method, d.localization_method);
+  EXPECT_EQ(o.mean_shift_radius, d.mean_shift_radius);
+  EXPECT_EQ(o.component_spacing, d.component_spacing);
+  EXPECT_EQ(o.localization_cell_size, d.localization_cell_size);
+  EXPECT_EQ(o.normalized_cut_threshold, d.normalized_cut_threshold);
+  EXPECT_EQ(o.height_image_sigma, d.height_image_sigma);
+  EXPECT_EQ(o.height_image_threshold, d.height_image_threshold);
+  EXPECT_EQ(o.number_of_threads, d.number_of_threads);
+  EXPECT_EQ(o.minimum_cluster_size, d.minimum_cluster_size);
+  EXPECT_EQ(o.maximum_cluster_height, d.maximum_cluster_height);
+  const PSOR::Locate_objects_options g = PSOR::locate_objects_options(
+    PSOR::parameters::maximum_cluster_height(7.5).localization_method(PSOR::Localization_method::MEAN_SHIFT));
+  EXPECT_EQ(g.maximum_cluster_height, 7.5);
+  EXPECT_EQ(g.localization_method, PSOR::Localization_method::MEAN_SHIFT);
+  EXPECT_EQ(g.component_spacing, d.component_spacing);
+}
+
 } // namespace

@@ -577,4 +577,54 @@ TEST(Segmentation, RecognitionBadInput)
   EXPECT_THROW(PSOR::recognize_objects(nan), Bad_input);
 }
 
+// The options come from one place: without named parameters, the struct's defaults; a named
+// parameter given lands in its member.
+TEST(Segmentation, OptionsFromNamedParameters)
+{
+  const PSOR::Segment_objects_options d;
+  const PSOR::Segment_objects_options o = PSOR::segment_objects_options();
+  EXPECT_EQ(o.segmentation_method, d.segmentation_method);
+  EXPECT_EQ(o.background_radius, d.background_radius);
+  EXPECT_EQ(o.foreground_height, d.foreground_height);
+  EXPECT_EQ(o.graph_cell_size, d.graph_cell_size);
+  EXPECT_EQ(o.number_of_neighbors, d.number_of_neighbors);
+  EXPECT_EQ(o.edge_sigma, d.edge_sigma);
+  EXPECT_FALSE(o.edge_sigma.has_value());
+  EXPECT_EQ(o.background_weight, d.background_weight);
+  EXPECT_EQ(o.maximum_graph_size, d.maximum_graph_size);
+  EXPECT_EQ(o.minimum_foreground_size, d.minimum_foreground_size);
+  EXPECT_EQ(o.maximum_cut_cost, d.maximum_cut_cost);
+  EXPECT_EQ(o.component_spacing, d.component_spacing);
+  EXPECT_EQ(o.number_of_threads, d.number_of_threads);
+  const PSOR::Segment_objects_options g =
+    PSOR::segment_objects_options(PSOR::parameters::edge_sigma(0.5).maximum_cut_cost(0.25));
+  ASSERT_TRUE(g.edge_sigma.has_value());
+  EXPECT_EQ(*g.edge_sigma, 0.5);
+  EXPECT_EQ(g.maximum_cut_cost, 0.25);
+  EXPECT_EQ(g.background_radius, d.background_radius);
+}
+
+TEST(Segmentation, RecognitionOptionsFromNamedParameters)
+{
+  const PSOR::Recognize_objects_options d;
+  const PSOR::Recognize_objects_options o = PSOR::recognize_objects_options();
+  EXPECT_EQ(o.tile_size, d.tile_size);
+  EXPECT_EQ(o.tile_margin, d.tile_margin);
+  EXPECT_FALSE(o.tile_origin.has_value());
+  EXPECT_EQ(o.localization_method, d.localization_method);
+  EXPECT_EQ(o.segmentation_method, d.segmentation_method);
+  EXPECT_EQ(o.background_radius, d.background_radius);
+  EXPECT_EQ(o.number_of_threads, d.number_of_threads);
+  // The segmentation's defaults are segment_objects()'s.
+  EXPECT_EQ(d.segmentation_method, PSOR::Segment_objects_options().segmentation_method);
+  EXPECT_EQ(d.background_radius, PSOR::Segment_objects_options().background_radius);
+  const PSOR::Recognize_objects_options g = PSOR::recognize_objects_options(
+    PSOR::parameters::tile_margin(4.0).tile_origin(std::array<double, 2>{{1.0, -2.0}}));
+  EXPECT_EQ(g.tile_margin, 4.0);
+  ASSERT_TRUE(g.tile_origin.has_value());
+  EXPECT_EQ((*g.tile_origin)[0], 1.0);
+  EXPECT_EQ((*g.tile_origin)[1], -2.0);
+  EXPECT_EQ(g.tile_size, d.tile_size);
+}
+
 } // namespace

@@ -13,13 +13,13 @@
 #include <set>
 #include <sstream>
 
-namespace SAS = CGAL::Shape_analysis_support;
+namespace PSOR = CGAL::Shape_analysis_support; // the scene generator (support code)
 
 namespace {
 
-SAS::Urban_scene_options base_options(std::size_t target = 200000)
+PSOR::Urban_scene_options base_options(std::size_t target = 200000)
 {
-  SAS::Urban_scene_options o;
+  PSOR::Urban_scene_options o;
   o.seed = 7; // URBAN_SCENE_SEED overrides it (to check the tests on other scenes)
   if(const char* seed = std::getenv("URBAN_SCENE_SEED"))
     o.seed = std::stoull(seed);
@@ -30,15 +30,15 @@ SAS::Urban_scene_options base_options(std::size_t target = 200000)
 
 struct Scanned
 {
-  SAS::Urban_scene scene;
-  SAS::Urban_scan scan;
+  PSOR::Urban_scene scene;
+  PSOR::Urban_scan scan;
 };
 
-Scanned run(const SAS::Urban_scene_options& o)
+Scanned run(const PSOR::Urban_scene_options& o)
 {
   Scanned s;
-  s.scene = SAS::make_urban_scene(o);
-  s.scan = SAS::scan_urban_scene(s.scene, o);
+  s.scene = PSOR::make_urban_scene(o);
+  s.scan = PSOR::scan_urban_scene(s.scene, o);
   return s;
 }
 
@@ -51,7 +51,7 @@ const Scanned& default_scan()
 const Scanned& airborne_scan()
 {
   static const Scanned s = [] {
-    SAS::Urban_scene_options o = base_options(50000);
+    PSOR::Urban_scene_options o = base_options(50000);
     o.street_length = 100.;
     o.airborne = true;
     o.airborne_spacing = 1.;
@@ -72,25 +72,25 @@ double box_gap_xy(const CGAL::Bbox_3& a, const CGAL::Bbox_3& b)
 TEST(UrbanScene, ClassNames)
 {
   std::set<std::string> names;
-  for(int c = SAS::first_object_class; c < SAS::first_object_class + SAS::number_of_object_classes; ++c) {
-    EXPECT_TRUE(SAS::is_object_class(c));
-    names.insert(SAS::object_class_name(c));
+  for(int c = PSOR::first_object_class; c < PSOR::first_object_class + PSOR::number_of_object_classes; ++c) {
+    EXPECT_TRUE(PSOR::is_object_class(c));
+    names.insert(PSOR::object_class_name(c));
   }
-  EXPECT_EQ(names.size(), std::size_t(SAS::number_of_object_classes));
-  EXPECT_EQ(std::string(SAS::object_class_name(SAS::GROUND)), "ground");
-  EXPECT_EQ(std::string(SAS::object_class_name(SAS::CAR)), "car");
-  EXPECT_FALSE(SAS::is_object_class(SAS::TREE));
+  EXPECT_EQ(names.size(), std::size_t(PSOR::number_of_object_classes));
+  EXPECT_EQ(std::string(PSOR::object_class_name(PSOR::GROUND)), "ground");
+  EXPECT_EQ(std::string(PSOR::object_class_name(PSOR::CAR)), "car");
+  EXPECT_FALSE(PSOR::is_object_class(PSOR::TREE));
 }
 
 TEST(UrbanScene, EveryClassInALongStreet)
 {
-  SAS::Urban_scene_options o = base_options();
+  PSOR::Urban_scene_options o = base_options();
   o.street_length = 600.;
-  SAS::Urban_scene sc = SAS::make_urban_scene(o);
+  PSOR::Urban_scene sc = PSOR::make_urban_scene(o);
   std::set<int> classes;
   for(const auto& b : sc.objects)
     classes.insert(b.object_class);
-  EXPECT_EQ(classes.size(), std::size_t(SAS::number_of_object_classes));
+  EXPECT_EQ(classes.size(), std::size_t(PSOR::number_of_object_classes));
   // The requested density is met (placement may fail rarely).
   EXPECT_GE(sc.objects.size(), std::size_t(0.9 * 30 * 6));
   for(std::size_t i = 0; i < sc.objects.size(); ++i)
@@ -99,25 +99,25 @@ TEST(UrbanScene, EveryClassInALongStreet)
 
 TEST(UrbanScene, ObjectsHaveRealisticSizesAndPlaces)
 {
-  const SAS::Urban_scene& sc = default_scan().scene;
+  const PSOR::Urban_scene& sc = default_scan().scene;
   ASSERT_GT(sc.objects.size(), 50u);
   for(const auto& b : sc.objects) {
     double h = b.height;
     double ex = b.bbox.xmax() - b.bbox.xmin(), ey = b.bbox.ymax() - b.bbox.ymin();
     switch(b.object_class) {
-    case SAS::SHORT_POST: EXPECT_GT(h, 0.7); EXPECT_LT(h, 1.3); break;
-    case SAS::TALL_POST: EXPECT_GT(h, 2.); EXPECT_LT(h, 3.); break;
-    case SAS::LAMP_POST: EXPECT_GT(h, 4.8); EXPECT_LT(h, 8.2); break;
-    case SAS::LIGHT_STANDARD: EXPECT_GT(h, 8.8); EXPECT_LT(h, 11.2); break;
-    case SAS::ADVERTISING_CYLINDER: EXPECT_GT(h, 2.7); EXPECT_LT(h, 3.5); break;
-    case SAS::CAR:
+    case PSOR::SHORT_POST: EXPECT_GT(h, 0.7); EXPECT_LT(h, 1.3); break;
+    case PSOR::TALL_POST: EXPECT_GT(h, 2.); EXPECT_LT(h, 3.); break;
+    case PSOR::LAMP_POST: EXPECT_GT(h, 4.8); EXPECT_LT(h, 8.2); break;
+    case PSOR::LIGHT_STANDARD: EXPECT_GT(h, 8.8); EXPECT_LT(h, 11.2); break;
+    case PSOR::ADVERTISING_CYLINDER: EXPECT_GT(h, 2.7); EXPECT_LT(h, 3.5); break;
+    case PSOR::CAR:
       EXPECT_GT(h, 1.3); EXPECT_LT(h, 1.9);
       EXPECT_GT((std::max)(ex, ey), 4.0); EXPECT_LT((std::max)(ex, ey), 5.);
       EXPECT_LT(std::abs(b.y), sc.road_half_width); // on the road
       break;
     default: EXPECT_LT(h, 4.5 + 0.7); break;
     }
-    if(b.object_class != SAS::CAR) { // on the sidewalk, in front of the buildings
+    if(b.object_class != PSOR::CAR) { // on the sidewalk, in front of the buildings
       EXPECT_GT(std::abs(b.y), sc.road_half_width);
       EXPECT_LT(std::abs(b.y), sc.facade_y);
       EXPECT_NEAR(b.z, sc.ground_height(b.x, b.y), 1e-9);
@@ -127,7 +127,7 @@ TEST(UrbanScene, ObjectsHaveRealisticSizesAndPlaces)
 
 TEST(UrbanScene, LowObjectsDoNotInterpenetrate)
 {
-  const SAS::Urban_scene& sc = default_scan().scene;
+  const PSOR::Urban_scene& sc = default_scan().scene;
   for(std::size_t i = 0; i < sc.objects.size(); ++i)
     for(std::size_t j = i + 1; j < sc.objects.size(); ++j) {
       const auto &a = sc.objects[i], &b = sc.objects[j];
@@ -138,11 +138,11 @@ TEST(UrbanScene, LowObjectsDoNotInterpenetrate)
 
 TEST(UrbanScene, Clutter)
 {
-  const SAS::Urban_scene& sc = default_scan().scene;
+  const PSOR::Urban_scene& sc = default_scan().scene;
   std::size_t at_wall = 0, touching = 0;
   for(const auto& b : sc.objects) {
     double far_side = b.y > 0 ? b.bbox.ymax() : -b.bbox.ymin();
-    if(b.object_class != SAS::CAR && std::abs(far_side - sc.facade_y) < 0.05)
+    if(b.object_class != PSOR::CAR && std::abs(far_side - sc.facade_y) < 0.05)
       ++at_wall;
   }
   for(std::size_t i = 0; i < sc.objects.size(); ++i)
@@ -157,7 +157,7 @@ TEST(UrbanScene, Clutter)
 
 TEST(UrbanScene, DeterministicForSeedAndThreads)
 {
-  SAS::Urban_scene_options o = base_options(50000);
+  PSOR::Urban_scene_options o = base_options(50000);
   o.street_length = 80.;
   o.number_of_threads = 1;
   Scanned a = run(o);
@@ -182,12 +182,12 @@ TEST(UrbanScene, DeterministicForSeedAndThreads)
 
 TEST(UrbanScene, PointCountNearTarget)
 {
-  const SAS::Urban_scan& s = default_scan().scan;
+  const PSOR::Urban_scan& s = default_scan().scan;
   EXPECT_EQ(s.mobile_points, s.points.size());
   EXPECT_GT(double(s.mobile_points), 0.7 * 200000);
   EXPECT_LT(double(s.mobile_points), 1.3 * 200000);
   // 10^5 points on a 150 m street (timing printed, not asserted).
-  SAS::Urban_scene_options o = base_options(100000);
+  PSOR::Urban_scene_options o = base_options(100000);
   o.street_length = 150.;
   o.seed = 3;
   auto t0 = std::chrono::steady_clock::now();
@@ -210,7 +210,7 @@ TEST(UrbanScene, PointsInsideTheirObjects)
     ASSERT_GE(p.intensity, 0.f);
     ASSERT_LE(p.intensity, 1.f);
     if(p.instance == 0) {
-      EXPECT_FALSE(SAS::is_object_class(p.label));
+      EXPECT_FALSE(PSOR::is_object_class(p.label));
       continue;
     }
     ++object_points;
@@ -236,7 +236,7 @@ TEST(UrbanScene, GroundFollowsHeightFunction)
   const double tol = 6 * 0.015 + 0.01;
   std::size_t ground = 0, road = 0, sidewalk = 0;
   for(const auto& p : s.scan.points) {
-    if(p.label != SAS::GROUND || std::abs(std::abs(p.y) - s.scene.road_half_width) < 0.1)
+    if(p.label != PSOR::GROUND || std::abs(std::abs(p.y) - s.scene.road_half_width) < 0.1)
       continue;
     ++ground;
     (std::abs(p.y) < s.scene.road_half_width ? road : sidewalk) += 1;
@@ -249,7 +249,7 @@ TEST(UrbanScene, GroundFollowsHeightFunction)
   double var = 0;
   std::size_t n = 0;
   for(const auto& p : s.scan.points)
-    if(p.label == SAS::GROUND && std::abs(p.y) < 3.) {
+    if(p.label == PSOR::GROUND && std::abs(p.y) < 3.) {
       double e = p.z - s.scene.ground_height(p.x, p.y);
       var += e * e, ++n;
     }
@@ -261,11 +261,11 @@ TEST(UrbanScene, GroundFollowsHeightFunction)
 TEST(UrbanScene, BuildingsOcclude)
 {
   const Scanned& s = default_scan();
-  const SAS::Urban_scene& sc = s.scene;
+  const PSOR::Urban_scene& sc = s.scene;
   const double tol = 6 * 0.015 + 0.01;
   std::size_t behind = 0, building = 0;
   for(const auto& p : s.scan.points) {
-    building += p.label == SAS::BUILDING;
+    building += p.label == PSOR::BUILDING;
     if(std::abs(p.y) <= sc.facade_y + tol)
       continue;
     ++behind; // only through gaps between buildings, or on their side walls
@@ -291,7 +291,7 @@ TEST(UrbanScene, AirbornePassSeesRoofs)
     if(!p.airborne)
       continue;
     ++air;
-    if(p.label == SAS::BUILDING && std::abs(p.y) > s.scene.facade_y + 1.) {
+    if(p.label == PSOR::BUILDING && std::abs(p.y) > s.scene.facade_y + 1.) {
       ++roof;
       bool on_top = false;
       for(const auto& b : s.scene.buildings)
@@ -308,7 +308,7 @@ TEST(UrbanScene, PointSetAndGroundTruth)
 {
   const Scanned& s = airborne_scan();
   CGAL::Point_set_3<CGAL::Epick::Point_3> ps;
-  SAS::fill_point_set(s.scan, ps);
+  PSOR::fill_point_set(s.scan, ps);
   ASSERT_EQ(ps.size(), s.scan.points.size());
   auto inst = ps.property_map<int>("instance");
   auto label = ps.property_map<int>("label");
@@ -323,10 +323,10 @@ TEST(UrbanScene, PointSetAndGroundTruth)
     ASSERT_EQ(inten.first[*it], p.intensity);
   }
   CGAL::Point_set_3<CGAL::Epick::Point_3> plain;
-  SAS::fill_point_set(s.scan, plain, false);
+  PSOR::fill_point_set(s.scan, plain, false);
   EXPECT_FALSE(plain.property_map<float>("intensity").second);
   std::ostringstream os;
-  SAS::write_ground_truth(os, s.scene.objects);
+  PSOR::write_ground_truth(os, s.scene.objects);
   std::size_t lines = 0;
   for(char c : os.str())
     lines += c == '\n';
@@ -335,28 +335,28 @@ TEST(UrbanScene, PointSetAndGroundTruth)
 
 TEST(UrbanScene, BadOptions)
 {
-  SAS::Urban_scene_options o = base_options();
+  PSOR::Urban_scene_options o = base_options();
   o.street_length = -1.;
-  EXPECT_THROW(SAS::make_urban_scene(o), CGAL::Shape_analysis::Bad_input);
+  EXPECT_THROW(PSOR::make_urban_scene(o), CGAL::Shape_analysis::Bad_input);
   o = base_options();
-  SAS::Urban_scene sc = SAS::make_urban_scene(o);
+  PSOR::Urban_scene sc = PSOR::make_urban_scene(o);
   o.target_points = 0;
   o.profile_spacing = 0.;
-  EXPECT_THROW(SAS::scan_urban_scene(sc, o), CGAL::Shape_analysis::Bad_input);
+  EXPECT_THROW(PSOR::scan_urban_scene(sc, o), CGAL::Shape_analysis::Bad_input);
   o = base_options();
   o.range_noise = -1.;
-  EXPECT_THROW(SAS::scan_urban_scene(sc, o), CGAL::Shape_analysis::Bad_input);
+  EXPECT_THROW(PSOR::scan_urban_scene(sc, o), CGAL::Shape_analysis::Bad_input);
   o = base_options();
   o.airborne = true;
   o.airborne_spacing = 0.;
-  EXPECT_THROW(SAS::scan_urban_scene(sc, o), CGAL::Shape_analysis::Bad_input);
+  EXPECT_THROW(PSOR::scan_urban_scene(sc, o), CGAL::Shape_analysis::Bad_input);
   // Explicit scanner parameters instead of a target count.
   o = base_options(0);
   o.street_length = 30.;
   o.profile_spacing = 0.1;
   o.angular_step = 0.01;
-  SAS::Urban_scene small = SAS::make_urban_scene(o);
-  SAS::Urban_scan scan = SAS::scan_urban_scene(small, o);
+  PSOR::Urban_scene small = PSOR::make_urban_scene(o);
+  PSOR::Urban_scan scan = PSOR::scan_urban_scene(small, o);
   EXPECT_EQ(scan.scan_lines, 300u);
   EXPECT_EQ(scan.profile_spacing, 0.1);
   EXPECT_GT(scan.points.size(), 300u * 100u);

@@ -534,6 +534,27 @@ void expect_bad_input(const F& f, const std::string& what)
   }
 }
 
+TEST(Options, DeformationOptionsHoldTheDefaultsAndTheNamedParameters)
+{
+  const RC::Partition_aware_deformation_options defaults;
+  const RC::Partition_aware_deformation_options read = RC::partition_aware_deformation_options();
+  EXPECT_EQ(read.number_of_iterations, defaults.number_of_iterations);
+  EXPECT_EQ(read.convergence_tolerance, defaults.convergence_tolerance);
+  EXPECT_EQ(read.flexible_weight, defaults.flexible_weight);
+  EXPECT_EQ(read.stiffness_exponent, defaults.stiffness_exponent);
+  EXPECT_FALSE(read.value_scale.has_value()) << "by default, half the largest value";
+  EXPECT_EQ(read.spread_rings, defaults.spread_rings);
+
+  const RC::Partition_aware_deformation_options given = RC::partition_aware_deformation_options(
+    RC::parameters::number_of_iterations(12).flexible_weight(0.5).value_scale(0.25).spread_rings(3));
+  EXPECT_EQ(given.number_of_iterations, 12u);
+  EXPECT_EQ(given.flexible_weight, 0.5);
+  ASSERT_TRUE(given.value_scale.has_value());
+  EXPECT_EQ(*given.value_scale, 0.25);
+  EXPECT_EQ(given.spread_rings, 3.0);
+  EXPECT_EQ(given.stiffness_exponent, defaults.stiffness_exponent);
+}
+
 TEST(BadInput, IsRefusedAndTheMeshIsLeftUntouched)
 {
   const Scene& s = arms_scene();

@@ -539,6 +539,87 @@ TEST(Segmentation, RealMeshGetsTheRequestedSegmentsAndEdgeValues)
 }
 
 // ---------------------------------------------------------------------------------------------
+// Options: the structs hold the defaults; the named parameters land in their members
+
+// Every member of the partition function's options is equal.
+void expect_same_sampling(const RC::Partition_function_options& a, const RC::Partition_function_options& b)
+{
+  EXPECT_EQ(a.sampling_method, b.sampling_method);
+  EXPECT_EQ(a.number_of_samples, b.number_of_samples);
+  EXPECT_EQ(a.convergence_tolerance, b.convergence_tolerance);
+  EXPECT_EQ(a.random_seed, b.random_seed);
+  EXPECT_EQ(a.part_size, b.part_size);
+  EXPECT_EQ(a.number_of_clusters, b.number_of_clusters);
+  EXPECT_EQ(a.randomness, b.randomness);
+  EXPECT_EQ(a.score_weighting, b.score_weighting);
+  EXPECT_EQ(a.number_of_threads, b.number_of_threads);
+  EXPECT_EQ(a.concavity_exponent, b.concavity_exponent);
+  EXPECT_EQ(a.component_link_distance, b.component_link_distance);
+  EXPECT_EQ(a.component_link_factor, b.component_link_factor);
+  EXPECT_EQ(bool(a.progress_callback), bool(b.progress_callback));
+}
+
+TEST(Options, WithoutNamedParametersTheyAreTheDefaults)
+{
+  expect_same_sampling(RC::partition_function_options(), RC::Partition_function_options());
+  const RC::Multiscale_partition_function_options multiscale = RC::multiscale_partition_function_options();
+  expect_same_sampling(multiscale, RC::Partition_function_options());
+  EXPECT_EQ(multiscale.part_sizes, RC::Multiscale_partition_function_options().part_sizes);
+  const RC::Most_consistent_cuts_options cuts = RC::most_consistent_cuts_options();
+  expect_same_sampling(cuts, RC::Partition_function_options());
+  EXPECT_EQ(cuts.number_of_cuts, RC::Most_consistent_cuts_options().number_of_cuts);
+  EXPECT_EQ(cuts.duplicate_tolerance, RC::Most_consistent_cuts_options().duplicate_tolerance);
+  const RC::Segment_with_partition_function_options seg = RC::segment_with_partition_function_options();
+  expect_same_sampling(seg, RC::Partition_function_options());
+  EXPECT_EQ(seg.number_of_segments, RC::Segment_with_partition_function_options().number_of_segments);
+  EXPECT_EQ(seg.boundary_refinement, RC::Segment_with_partition_function_options().boundary_refinement);
+  // The dual graph's defaults are the Core's, shared with the other packages.
+  EXPECT_EQ(RC::Partition_function_options().concavity_exponent,
+            CGAL::Shape_analysis::default_concavity_exponent);
+  EXPECT_EQ(RC::Partition_function_options().component_link_distance,
+            CGAL::Shape_analysis::default_component_link_distance);
+  EXPECT_EQ(RC::Partition_function_options().component_link_factor,
+            CGAL::Shape_analysis::default_component_link_factor);
+}
+
+TEST(Options, NamedParametersLandInTheirMembers)
+{
+  int called = 0;
+  const RC::Partition_function_options o = RC::partition_function_options(
+    RC::parameters::sampling_method(RC::HIERARCHICAL)
+      .number_of_samples(7)
+      .random_seed(9)
+      .part_size(0.1)
+      .concavity_exponent(3.5)
+      .component_link_factor(0.5)
+      .progress_callback([&](double) { ++called; })
+      .vertex_point_map(CGAL::Identity_property_map<Point>()));
+  EXPECT_EQ(o.sampling_method, RC::HIERARCHICAL);
+  EXPECT_EQ(o.number_of_samples, 7u);
+  EXPECT_EQ(o.random_seed, 9u);
+  EXPECT_EQ(o.part_size, 0.1);
+  EXPECT_EQ(o.concavity_exponent, 3.5);
+  EXPECT_EQ(o.component_link_factor, 0.5);
+  EXPECT_EQ(o.randomness, RC::Partition_function_options().randomness) << "not given: the default";
+  ASSERT_TRUE(bool(o.progress_callback));
+  o.progress_callback(0.5);
+  EXPECT_EQ(called, 1);
+
+  const std::vector<double> sizes{0.03, 0.06};
+  EXPECT_EQ(RC::multiscale_partition_function_options(RC::parameters::part_sizes(sizes)).part_sizes, sizes);
+  const RC::Most_consistent_cuts_options cuts =
+    RC::most_consistent_cuts_options(RC::parameters::number_of_cuts(3).duplicate_tolerance(0.2).number_of_samples(11));
+  EXPECT_EQ(cuts.number_of_cuts, 3u);
+  EXPECT_EQ(cuts.duplicate_tolerance, 0.2);
+  EXPECT_EQ(cuts.number_of_samples, 11u);
+  const RC::Segment_with_partition_function_options seg = RC::segment_with_partition_function_options(
+    RC::parameters::number_of_segments(4).boundary_refinement(false).concavity_exponent(2.0));
+  EXPECT_EQ(seg.number_of_segments, 4u);
+  EXPECT_FALSE(seg.boundary_refinement);
+  EXPECT_EQ(seg.concavity_exponent, 2.0);
+}
+
+// ---------------------------------------------------------------------------------------------
 // Bad input
 
 TEST(BadInput, MeshesAndParametersAreRefused)

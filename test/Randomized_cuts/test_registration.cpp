@@ -478,6 +478,33 @@ TEST(Registration, WorksWithPolyhedron)
   EXPECT_NEAR(r.scale, 1.7, 1e-6);
 }
 
+TEST(Options, RegisterMeshesOptionsHoldTheDefaultsAndTheNamedParameters)
+{
+  const RC::Register_meshes_options defaults;
+  const RC::Register_meshes_options read = RC::register_meshes_options();
+  EXPECT_EQ(read.number_of_points, defaults.number_of_points);
+  EXPECT_EQ(read.number_of_iterations, defaults.number_of_iterations);
+  EXPECT_EQ(read.overlap, defaults.overlap);
+  EXPECT_EQ(read.partition_weighting, defaults.partition_weighting);
+  EXPECT_EQ(read.number_of_samples, defaults.number_of_samples);
+  EXPECT_EQ(read.random_seed, defaults.random_seed);
+  EXPECT_EQ(read.sampling_method, defaults.sampling_method);
+  EXPECT_EQ(read.part_size, defaults.part_size);
+  // The registration samples fewer segmentations per partition function than partition_function().
+  EXPECT_LT(defaults.number_of_samples, RC::Partition_function_options().number_of_samples);
+
+  const RC::Register_meshes_options given = RC::register_meshes_options(
+    RC::parameters::number_of_points(123).overlap(0.5).number_of_iterations(7).number_of_samples(9)
+      .partition_weighting(false).random_seed(4).part_size(0.1));
+  EXPECT_EQ(given.number_of_points, 123u);
+  EXPECT_EQ(given.overlap, 0.5);
+  EXPECT_EQ(given.number_of_iterations, 7u);
+  EXPECT_EQ(given.number_of_samples, 9u);
+  EXPECT_FALSE(given.partition_weighting);
+  EXPECT_EQ(given.random_seed, 4u);
+  EXPECT_EQ(given.part_size, 0.1);
+}
+
 TEST(BadInput, MeshesAndParameters)
 {
   const Mesh good = to_mesh(SAS::mesh_procedural_shape(SAS::three_sphere_chain(0), 0.4));

@@ -30,6 +30,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -401,12 +402,12 @@ TEST(Symmetrization, MeshesTooLargeForTheRefinementTakeGrowingConstrainedWeights
   const SYI::Surface surface = surface_of(input);
   SYI::Solver_symmetry ss;
   ss.transform = SYI::affine_of(s, "test");
-  SYI::Symmetrization_options plain, escalating;
-  plain.target_error = 0;
-  plain.refinement_steps = 0;
+  SY::Symmetrize_options plain;
+  plain.target_symmetry_error = 0;
+  SYI::Symmetrizer_settings escalating;
   escalating.refinement_limit = 1000;
   const SYI::Symmetrization_output a = SYI::Symmetrizer(surface, {ss}, plain).run();
-  const SYI::Symmetrization_output b = SYI::Symmetrizer(surface, {ss}, escalating).run();
+  const SYI::Symmetrization_output b = SYI::Symmetrizer(surface, {ss}, SY::Symmetrize_options(), escalating).run();
   EXPECT_LT(b.error_after, 0.25 * a.error_after);
   EXPECT_GT(b.iterations.size(), a.iterations.size());
   const Metrics metrics(input);
@@ -667,6 +668,63 @@ TEST(Transfer, BlendMakesTheAttributeSymmetricThroughTheSymmetrizedMap)
 
 // ---------------------------------------------------------------------------------------------
 // Bad input
+
+TEST(Options, DefaultsComeFromTheOptionsStructs)
+{
+  // With no named parameters, each options function gives the default-constructed struct; a
+  // named parameter lands in its member.
+  const SY::Detect_reflective_symmetries_options d, dn = SY::detect_reflective_symmetries_options();
+  EXPECT_EQ(dn.number_of_samples, d.number_of_samples);
+  EXPECT_EQ(dn.maximum_number_of_symmetries, d.maximum_number_of_symmetries);
+  EXPECT_EQ(dn.minimum_support, d.minimum_support);
+  EXPECT_EQ(dn.support_tolerance, d.support_tolerance);
+  EXPECT_EQ(dn.random_seed, d.random_seed);
+  EXPECT_EQ(dn.number_of_threads, d.number_of_threads);
+  const auto dp = SY::detect_reflective_symmetries_options(
+    SY::parameters::number_of_samples(123).random_seed(7).minimum_support(0.25));
+  EXPECT_EQ(dp.number_of_samples, 123u);
+  EXPECT_EQ(dp.random_seed, 7u);
+  EXPECT_EQ(dp.minimum_support, 0.25);
+  EXPECT_EQ(dp.maximum_number_of_symmetries, d.maximum_number_of_symmetries);
+
+  const SY::Symmetrize_options s, sn = SY::symmetrize_options();
+  EXPECT_EQ(sn.number_of_iterations, s.number_of_iterations);
+  EXPECT_EQ(sn.shape_weight, s.shape_weight);
+  EXPECT_EQ(sn.displacement_weight, s.displacement_weight);
+  EXPECT_EQ(sn.number_of_levels, s.number_of_levels);
+  EXPECT_EQ(sn.coarsest_level_size, s.coarsest_level_size);
+  EXPECT_EQ(sn.symmetry_tolerance, s.symmetry_tolerance);
+  EXPECT_EQ(sn.target_symmetry_error, s.target_symmetry_error);
+  EXPECT_EQ(sn.final_symmetry_weight, s.final_symmetry_weight);
+  EXPECT_EQ(sn.support_weighting, s.support_weighting);
+  EXPECT_FALSE(sn.support_weighting.has_value());
+  EXPECT_EQ(sn.number_of_threads, s.number_of_threads);
+  EXPECT_FALSE(sn.progress_callback);
+  double reported = -1;
+  const auto sp = SY::symmetrize_options(SY::parameters::final_symmetry_weight(1e3)
+                                           .support_weighting(true)
+                                           .number_of_iterations(3)
+                                           .progress_callback([&](double f) { reported = f; }));
+  EXPECT_EQ(sp.final_symmetry_weight, 1e3);
+  EXPECT_EQ(sp.support_weighting, std::optional<bool>(true));
+  EXPECT_EQ(sp.number_of_iterations, 3u);
+  EXPECT_EQ(sp.target_symmetry_error, s.target_symmetry_error);
+  ASSERT_TRUE(bool(sp.progress_callback));
+  sp.progress_callback(0.5);
+  EXPECT_EQ(reported, 0.5);
+
+  EXPECT_EQ(SY::compute_symmetric_map_options().number_of_threads,
+            SY::Compute_symmetric_map_options().number_of_threads);
+  EXPECT_EQ(SY::compute_symmetric_map_options(SY::parameters::number_of_threads(2)).number_of_threads, 2u);
+
+  const SY::Transfer_vertex_attribute_options t, tn = SY::transfer_vertex_attribute_options();
+  EXPECT_EQ(tn.transfer_mode, t.transfer_mode);
+  EXPECT_EQ(tn.source_side, t.source_side);
+  const auto tp = SY::transfer_vertex_attribute_options(
+    SY::parameters::transfer_mode(SY::Transfer_mode::BLEND).source_side(-1));
+  EXPECT_EQ(tp.transfer_mode, SY::Transfer_mode::BLEND);
+  EXPECT_EQ(tp.source_side, -1);
+}
 
 TEST(BadInput, RefusedWithAReason)
 {

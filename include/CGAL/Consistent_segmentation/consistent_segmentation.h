@@ -6,6 +6,7 @@
 
 /// \file consistent_segmentation.h
 
+#include <CGAL/Consistent_segmentation/Consistent_segmentation_options.h>
 #include <CGAL/Consistent_segmentation/hierarchical_segmentation.h>
 #include <CGAL/Consistent_segmentation/internal/Cosegmentation.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
@@ -28,8 +29,6 @@
 namespace CGAL {
 namespace Consistent_segmentation {
 
-/// The named parameters of this package (this project's, and CGAL's usable in the same chain).
-namespace parameters = CGAL::Shape_analysis::parameters;
 using CGAL::Shape_analysis::Bad_input;
 
 /*!
@@ -119,34 +118,6 @@ void prepare_mesh(const TriangleMesh& tm, VertexPointMap vpm, double alpha, cons
     for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
       out.triangles[i][std::size_t(k++)] = to_vector(get(vpm, target(h, tm))) / unit;
   }
-}
-
-template <typename NamedParameters>
-Coseg_options coseg_options(const NamedParameters& np, const std::string& who)
-{
-  namespace SAI = CGAL::Shape_analysis::internal;
-  namespace snp = CGAL::Shape_analysis::internal_np;
-  Coseg_options o;
-  // Concavity, links, prior factor, refinement and the number of segments as for
-  // hierarchical_segmentation(); the progress is reported for the whole computation.
-  o.stage_one = segmentation_options(np);
-  o.number_of_segments = o.stage_one.number_of_segments;
-  o.progress = o.stage_one.progress;
-  o.stage_one.progress = {};
-  o.number_of_oversegments =
-    SAI::parameter_value<std::size_t>(np, snp::number_of_oversegments_tag, std::size_t(20));
-  o.alpha = SAI::parameter_value<double>(np, snp::adjacency_exponent_tag, 0.1);
-  o.number_of_points =
-    SAI::parameter_value<std::size_t>(np, snp::number_of_points_tag, std::size_t(1000));
-  o.normal_threshold = SAI::parameter_value<double>(np, snp::normal_threshold_tag, 0.3);
-  o.distance_fraction = SAI::parameter_value<double>(np, snp::correspondence_distance_tag, 0.2);
-  o.number_of_partners =
-    SAI::parameter_value<std::size_t>(np, snp::number_of_partners_tag, std::size_t(4));
-  o.seed = SAI::parameter_value<std::uint64_t>(np, CGAL::internal_np::random_seed, std::uint64_t(0));
-  o.number_of_threads =
-    SAI::parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
-  check_coseg_options(o, who);
-  return o;
 }
 
 inline Consistent_segmentation_result to_result(const Coseg_result& r)
@@ -255,29 +226,29 @@ results that do not depend on the number of threads.
   \cgalParamNBegin{number_of_segments}
     \cgalParamDescription{the number of segments over the whole set}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`8`}
+    \cgalParamDefault{`Consistent_segmentation_options::number_of_segments`}
     \cgalParamExtra{more segments are returned when more known labels than that are given (one
       segment per label at least), fewer when the meshes have fewer over-segments in all}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_oversegments}
     \cgalParamDescription{the number of segments of each mesh after the first stage}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`20`}
+    \cgalParamDefault{`Consistent_segmentation_options::number_of_oversegments`}
   \cgalParamNEnd
   \cgalParamNBegin{adjacency_exponent}
     \cgalParamDescription{the exponent \f$\alpha\f$ of the adjacency term of \f$E\f$ (0: only the
       correspondences count; 1: only the mesh edges)}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.1`}
-    \cgalParamExtra{the thesis uses 0.01; 0.1 makes boundaries follow the concave creases of each
-      mesh more, which gives lower errors on the Princeton Segmentation Benchmark (see the manual);
-      above about 0.3 whole meshes tend to stay unsegmented}
+    \cgalParamDefault{`Consistent_segmentation_options::adjacency_exponent`}
+    \cgalParamExtra{the thesis uses 0.01; the larger default makes boundaries follow the concave
+      creases of each mesh more, which gives lower errors on the Princeton Segmentation Benchmark
+      (see the manual); above about 0.3 whole meshes tend to stay unsegmented}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_points}
     \cgalParamDescription{the number of points sampled on each mesh for the alignments and the
       correspondences, from 10 to 10,000,000}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`1000`}
+    \cgalParamDefault{`Consistent_segmentation_options::number_of_points`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_partners}
     \cgalParamDescription{the number of best-aligned partners whose correspondences each mesh keeps
@@ -286,19 +257,19 @@ results that do not depend on the number of threads.
       2 `number_of_partners` meshes of most similar shape distribution. 0 aligns and keeps every
       pair}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`4`}
+    \cgalParamDefault{`Consistent_segmentation_options::number_of_partners`}
   \cgalParamNEnd
   \cgalParamNBegin{normal_threshold}
     \cgalParamDescription{two samples correspond only when the dot product of their normals, after
       alignment, is above this; in [-1, 1)}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.3`}
+    \cgalParamDefault{`Consistent_segmentation_options::normal_threshold`}
   \cgalParamNEnd
   \cgalParamNBegin{correspondence_distance}
     \cgalParamDescription{two samples correspond only when, after alignment, they are closer than
       this fraction of the bounding-box diagonal of the mesh of the second one}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.2`}
+    \cgalParamDefault{`Consistent_segmentation_options::correspondence_distance`}
   \cgalParamNEnd
   \cgalParamNBegin{known_segment_maps}
     \cgalParamDescription{a range with one readable face property map per mesh giving known labels
@@ -320,7 +291,7 @@ results that do not depend on the number of threads.
     \cgalParamDescription{how many times cheaper the boundaries of the prior segmentations are to cut
       (in both stages)}
     \cgalParamType{`double`}
-    \cgalParamDefault{`10`}
+    \cgalParamDefault{`Consistent_segmentation_options::prior_boundary_factor`}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_point_maps}
     \cgalParamDescription{a range with one vertex point map per mesh}
@@ -332,36 +303,36 @@ results that do not depend on the number of threads.
     \cgalParamDescription{whether boundaries are refined (in the over-segmentation of each mesh
       without known labels, and by moves of over-segments during the joint merging)}
     \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
+    \cgalParamDefault{`Consistent_segmentation_options::boundary_refinement`}
   \cgalParamNEnd
   \cgalParamNBegin{concavity_exponent}
     \cgalParamDescription{the exponent \f$\alpha\f$ of the concavity weight of the cut costs, as in
       `hierarchical_segmentation()`}
     \cgalParamType{`double`}
-    \cgalParamDefault{`10`}
+    \cgalParamDefault{`Consistent_segmentation_options::concavity_exponent`}
   \cgalParamNEnd
   \cgalParamNBegin{component_link_distance}
     \cgalParamDescription{faces of different connected components of one mesh closer than this
       fraction of its bounding-box diagonal are linked}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.1`}
+    \cgalParamDefault{`Consistent_segmentation_options::component_link_distance`}
   \cgalParamNEnd
   \cgalParamNBegin{component_link_factor}
     \cgalParamDescription{the cut cost of a link between components, relative to the mean cut cost
       of the mesh edges}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.01`}
+    \cgalParamDefault{`Consistent_segmentation_options::component_link_factor`}
   \cgalParamNEnd
   \cgalParamNBegin{random_seed}
     \cgalParamDescription{the seed of the random numbers (sample points)}
     \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`0`}
+    \cgalParamDefault{`Consistent_segmentation_options::random_seed`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
     \cgalParamDescription{the largest number of threads used (with TBB); 0 for all cores. The
       result does not depend on it}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`0`}
+    \cgalParamDefault{`Consistent_segmentation_options::number_of_threads`}
   \cgalParamNEnd
   \cgalParamNBegin{progress_callback}
     \cgalParamDescription{called from time to time with the fraction of the work done}
@@ -398,7 +369,8 @@ Consistent_segmentation_result consistent_segmentation(const MeshRange& meshes,
   if(internal::range_size(face_segment_maps) != m)
     throw Bad_input(who + ": " + std::to_string(internal::range_size(face_segment_maps)) +
                     " face segment maps for " + std::to_string(m) + " meshes");
-  const internal::Coseg_options options = internal::coseg_options(np, who);
+  const Consistent_segmentation_options options = consistent_segmentation_options(np);
+  internal::check_coseg_options(options, who);
 
   auto vpms = get_parameter(np, snp::vertex_point_maps_tag);
   auto known = get_parameter(np, snp::known_segment_maps_tag);
@@ -425,11 +397,11 @@ Consistent_segmentation_result consistent_segmentation(const MeshRange& meshes,
     const TriangleMesh& tm = internal::range_element(meshes, i);
     const std::string mesh_who = who + " (mesh " + std::to_string(i) + ")";
     if constexpr(has_vpms)
-      internal::prepare_mesh(tm, internal::range_element(vpms, i), options.stage_one.concavity_exponent,
+      internal::prepare_mesh(tm, internal::range_element(vpms, i), options.concavity_exponent,
                              mesh_who, data[i], faces_by_node[i]);
     else
       internal::prepare_mesh(tm, get_const_property_map(CGAL::vertex_point, tm),
-                             options.stage_one.concavity_exponent, mesh_who, data[i], faces_by_node[i]);
+                             options.concavity_exponent, mesh_who, data[i], faces_by_node[i]);
     if constexpr(has_known) {
       data[i].known = internal::read_face_labels(internal::range_element(known, i), faces_by_node[i]);
       internal::check_known_labels(data[i].known, mesh_who);
@@ -491,7 +463,8 @@ Consistent_segmentation_result symmetric_segmentation(const TriangleMesh& tm, co
   namespace snp = CGAL::Shape_analysis::internal_np;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   const std::string who = "symmetric_segmentation";
-  const internal::Coseg_options options = internal::coseg_options(np, who);
+  const Consistent_segmentation_options options = consistent_segmentation_options(np);
+  internal::check_coseg_options(options, who);
 
   const double a = CGAL::to_double(plane.a()), b = CGAL::to_double(plane.b()),
                c = CGAL::to_double(plane.c()), d = CGAL::to_double(plane.d());
@@ -504,7 +477,7 @@ Consistent_segmentation_result symmetric_segmentation(const TriangleMesh& tm, co
   internal::prepare_mesh(tm,
                          choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                           get_const_property_map(CGAL::vertex_point, tm)),
-                         options.stage_one.concavity_exponent, who, data[0], faces_by_node);
+                         options.concavity_exponent, who, data[0], faces_by_node);
   auto prior = get_parameter(np, snp::prior_segment_map_tag);
   if constexpr(!std::is_same<decltype(prior), CGAL::internal_np::Param_not_found>::value)
     data[0].prior = internal::read_face_labels(prior, faces_by_node);

@@ -12,6 +12,7 @@
 #include <CGAL/Shape_analysis/internal/Dual_graph.h>
 #include <CGAL/Shape_analysis/internal/Mesh_checks.h>
 #include <CGAL/Shape_analysis/internal/Normalized_cut_clustering.h>
+#include <CGAL/Consistent_segmentation/Hierarchical_segmentation_options.h>
 #include <CGAL/Consistent_segmentation/internal/Segmentation_graph.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -25,33 +26,8 @@
 namespace CGAL {
 namespace Consistent_segmentation {
 
-/// The named parameters of this package (this project's, and CGAL's usable in the same chain).
-namespace parameters = CGAL::Shape_analysis::parameters;
 using CGAL::Shape_analysis::Bad_input;
 
-/// \cond SKIP_IN_MANUAL
-namespace internal {
-
-// The options of the hierarchical segmentation from named parameters (not checked).
-template <typename NamedParameters>
-Segmentation_options segmentation_options(const NamedParameters& np)
-{
-  namespace SAI = CGAL::Shape_analysis::internal;
-  namespace snp = CGAL::Shape_analysis::internal_np;
-  Segmentation_options o;
-  o.number_of_segments = SAI::parameter_value<std::size_t>(np, snp::number_of_segments_tag, std::size_t(8));
-  o.concavity_exponent = SAI::parameter_value<double>(np, snp::concavity_exponent_tag, 10.0);
-  o.prior_boundary_factor = SAI::parameter_value<double>(np, snp::prior_boundary_factor_tag, 10.0);
-  o.component_link_distance = SAI::parameter_value<double>(np, snp::component_link_distance_tag, 0.1);
-  o.component_link_factor = SAI::parameter_value<double>(np, snp::component_link_factor_tag, 0.01);
-  o.boundary_refinement = SAI::parameter_value<bool>(np, snp::boundary_refinement_tag, true);
-  o.progress = SAI::parameter_value<std::function<void(double)>>(np, snp::progress_callback_tag,
-                                                                 std::function<void(double)>());
-  return o;
-}
-
-} // namespace internal
-/// \endcond
 
 /*!
 \ingroup PkgConsistentSegmentationRef
@@ -92,14 +68,14 @@ good up to rounding.
   \cgalParamNBegin{number_of_segments}
     \cgalParamDescription{the number of segments to produce}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`8`}
+    \cgalParamDefault{`Hierarchical_segmentation_options::number_of_segments`}
     \cgalParamExtra{must be between 1 and the number of faces}
   \cgalParamNEnd
   \cgalParamNBegin{concavity_exponent}
     \cgalParamDescription{the exponent \f$\alpha\f$ of the concavity weight: larger values make
       concave creases relatively cheaper to cut}
     \cgalParamType{`double`}
-    \cgalParamDefault{`10`}
+    \cgalParamDefault{`Hierarchical_segmentation_options::concavity_exponent`}
   \cgalParamNEnd
   \cgalParamNBegin{prior_segment_map}
     \cgalParamDescription{a prior segmentation: a property map from faces to integer labels; edges
@@ -111,27 +87,27 @@ good up to rounding.
   \cgalParamNBegin{prior_boundary_factor}
     \cgalParamDescription{the factor by which the cut cost of a prior boundary edge is divided}
     \cgalParamType{`double`}
-    \cgalParamDefault{`10`}
+    \cgalParamDefault{`Hierarchical_segmentation_options::prior_boundary_factor`}
     \cgalParamExtra{must be at least 1}
   \cgalParamNEnd
   \cgalParamNBegin{component_link_distance}
     \cgalParamDescription{faces of different connected components closer than this fraction of
       the bounding-box diagonal are linked}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.1`}
+    \cgalParamDefault{`Hierarchical_segmentation_options::component_link_distance`}
   \cgalParamNEnd
   \cgalParamNBegin{component_link_factor}
     \cgalParamDescription{the cost of a link between components, relative to the mean cut cost of
       the mesh edges (\f$k_{cc}\f$)}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.01`}
+    \cgalParamDefault{`Hierarchical_segmentation_options::component_link_factor`}
   \cgalParamNEnd
   \cgalParamNBegin{boundary_refinement}
     \cgalParamDescription{whether the segment boundaries are refined after the clustering: whole
       clusters of the merge history, then single faces, are moved to a neighbouring segment while
       the normalized cut decreases}
     \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
+    \cgalParamDefault{`Hierarchical_segmentation_options::boundary_refinement`}
   \cgalParamNEnd
   \cgalParamNBegin{progress_callback}
     \cgalParamDescription{called from time to time with the fraction of the work done (from 0 to
@@ -190,7 +166,7 @@ std::size_t hierarchical_segmentation(const TriangleMesh& tm, FaceSegmentMap fac
   SA::internal::check_triangle_mesh(tm, vpm, to_vector, who);
   const std::size_t n = fim.size();
 
-  const internal::Segmentation_options options = internal::segmentation_options(np);
+  const Hierarchical_segmentation_options options = hierarchical_segmentation_options(np);
   internal::check_options(options, n, who);
 
   SA::internal::Dual_graph graph;

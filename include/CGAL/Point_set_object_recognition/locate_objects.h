@@ -75,16 +75,80 @@ struct Localization_evaluation
   double recall = 0;    ///< found objects / objects (1 when there is none)
 };
 
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+
+The options of `locate_objects()`: each member is the named parameter of the same name,
+initialized to its default. This struct is where the defaults are written; the manual,
+`locate_objects_options()` and the `shape_analysis points locate` command take them from here.
+
+`component_spacing` here (as in `segment_objects()`) groups the foreground points into objects; it
+is not the `component_spacing` of `remove_background()`
+(`Remove_background_options::component_spacing`), whose voxels are coarser.
+*/
+struct Locate_objects_options
+{
+  /// how the points are grouped into clusters
+  Localization_method localization_method = Localization_method::CONNECTED_COMPONENTS;
+  /// the radius of the flat kernel of the mean shift, in metres (positive)
+  double mean_shift_radius = 2;
+  /// the side of the voxels whose contact makes clusters (connected components), in metres
+  /// (positive)
+  double component_spacing = 0.3;
+  /// the side of the voxels of the normalized cut and of the cells of the height image, in metres
+  /// (positive)
+  double localization_cell_size = 0.15;
+  /// two clusters merge only if the normalized cut between them is at least this (non-negative)
+  double normalized_cut_threshold = 0.002;
+  /// the standard deviation of the smaller Gaussian of the difference of Gaussians, in metres
+  /// (positive)
+  double height_image_sigma = 0.2;
+  /// the response of the difference of Gaussians above which a cell belongs to an object, in
+  /// metres (finite)
+  double height_image_threshold = 0.02;
+  /// the largest number of threads (0: TBB's choice, 1: the calling thread only)
+  std::size_t number_of_threads = 0;
+  /// clusters with fewer points are rejected
+  std::size_t minimum_cluster_size = 10;
+  /// clusters with a larger vertical extent are rejected, in metres (positive)
+  double maximum_cluster_height = 12;
+};
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+
+The options that `locate_objects()` reads from the named parameters `np`: the value of each named
+parameter given, the default of `Locate_objects_options` for the others. The values are not
+checked here; `locate_objects()` checks them. Named parameters that are not options (property
+maps) are ignored.
+
+\tparam NamedParameters a sequence of named parameters
+\param np the named parameters of `locate_objects()`
+\returns the options
+*/
+template <typename NamedParameters = parameters::Default_named_parameters>
+Locate_objects_options locate_objects_options(const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::Shape_analysis::internal::parameter_value;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  Locate_objects_options o;
+  o.localization_method = parameter_value(np, snp::localization_method_tag, o.localization_method);
+  o.mean_shift_radius = parameter_value(np, snp::mean_shift_radius_tag, o.mean_shift_radius);
+  o.component_spacing = parameter_value(np, snp::component_spacing_tag, o.component_spacing);
+  o.localization_cell_size = parameter_value(np, snp::localization_cell_size_tag, o.localization_cell_size);
+  o.normalized_cut_threshold = parameter_value(np, snp::normalized_cut_threshold_tag, o.normalized_cut_threshold);
+  o.height_image_sigma = parameter_value(np, snp::height_image_sigma_tag, o.height_image_sigma);
+  o.height_image_threshold = parameter_value(np, snp::height_image_threshold_tag, o.height_image_threshold);
+  o.number_of_threads = parameter_value(np, snp::number_of_threads_tag, o.number_of_threads);
+  o.minimum_cluster_size = parameter_value(np, snp::minimum_cluster_size_tag, o.minimum_cluster_size);
+  o.maximum_cluster_height = parameter_value(np, snp::maximum_cluster_height_tag, o.maximum_cluster_height);
+  return o;
+}
+
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-struct Localization_options
-{
-  Localization_method method = Localization_method::CONNECTED_COMPONENTS;
-  double spacing = 0.3, tallest = 12, shift_radius = 2, cell = 0.15, cut_threshold = 0.002, sigma = 0.2,
-         image_threshold = 0.02;
-  std::size_t minimum = 10, threads = 0;
-};
+typedef Locate_objects_options Localization_options;
 
 // Above this, a cluster's points are not its foot (metres above its lowest point).
 constexpr double foot_height = 1.0;
@@ -97,15 +161,15 @@ inline std::vector<std::uint32_t> clusters_by_method(const std::vector<std::arra
                                                      const Localization_options& o, const std::array<double, 3>& lo,
                                                      const std::array<double, 3>& hi, std::size_t& clusters)
 {
-  switch(o.method) {
+  switch(o.localization_method) {
   case Localization_method::MEAN_SHIFT:
-    return mean_shift_clusters(p, o.shift_radius, lo, clusters);
+    return mean_shift_clusters(p, o.mean_shift_radius, lo, clusters);
   case Localization_method::HEIGHT_IMAGE:
-    return height_image_clusters(p, o.cell, o.sigma, o.image_threshold, lo, hi, clusters);
+    return height_image_clusters(p, o.localization_cell_size, o.height_image_sigma, o.height_image_threshold, lo, hi, clusters);
   case Localization_method::NORMALIZED_CUT:
-    return normalized_cut_clusters(p, o.cell, o.cut_threshold, lo, o.threads, clusters);
+    return normalized_cut_clusters(p, o.localization_cell_size, o.normalized_cut_threshold, lo, o.number_of_threads, clusters);
   default:
-    return voxel_components(p, std::vector<char>(p.size(), 1), o.spacing, lo, clusters);
+    return voxel_components(p, std::vector<char>(p.size(), 1), o.component_spacing, lo, clusters);
   }
 }
 
@@ -143,7 +207,7 @@ cluster_locations(const std::vector<std::array<double, 3>>& p, const std::vector
   std::vector<std::pair<Object_location, std::size_t>> kept;
   for(std::size_t c = 0; c < clusters; ++c) {
     const double height = z[c][1] - z[c][0];
-    if(count[c] < o.minimum || height > o.tallest)
+    if(count[c] < o.minimum_cluster_size || height > o.maximum_cluster_height)
       continue;
     Object_location l;
     l.position = {lo[0] + xy[c][0] / double(foot[c]), lo[1] + xy[c][1] / double(foot[c]), z[c][0]};
@@ -171,11 +235,11 @@ inline Localization_result locate_objects(const std::vector<std::array<double, 3
   if(p.empty())
     return r;
   std::array<double, 3> lo, hi;
-  double voxel = o.spacing;
-  if(o.method == Localization_method::MEAN_SHIFT)
-    voxel = o.shift_radius / 2;
-  else if(o.method == Localization_method::HEIGHT_IMAGE || o.method == Localization_method::NORMALIZED_CUT)
-    voxel = o.cell;
+  double voxel = o.component_spacing;
+  if(o.localization_method == Localization_method::MEAN_SHIFT)
+    voxel = o.mean_shift_radius / 2;
+  else if(o.localization_method == Localization_method::HEIGHT_IMAGE || o.localization_method == Localization_method::NORMALIZED_CUT)
+    voxel = o.localization_cell_size;
   checked_bounds(p, (std::min)(voxel, floating_radius), "locate_objects", lo, hi);
   std::size_t clusters = 0;
   const std::vector<std::uint32_t> cluster = clusters_by_method(p, o, lo, hi, clusters);
@@ -253,58 +317,59 @@ for any number of threads.
   \cgalParamNBegin{localization_method}
     \cgalParamDescription{how the points are grouped}
     \cgalParamType{`Localization_method`}
-    \cgalParamDefault{`Localization_method::CONNECTED_COMPONENTS`}
+    \cgalParamDefault{`Locate_objects_options::localization_method`}
   \cgalParamNEnd
   \cgalParamNBegin{mean_shift_radius}
     \cgalParamDescription{the radius of the flat kernel of the mean shift, in metres (the thesis: 2 m)}
     \cgalParamType{`double`}
-    \cgalParamDefault{`2`}
+    \cgalParamDefault{`Locate_objects_options::mean_shift_radius`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
   \cgalParamNBegin{component_spacing}
     \cgalParamDescription{the side of the voxels whose contact makes clusters (connected components), in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.3`}
-    \cgalParamExtra{must be positive}
+    \cgalParamDefault{`Locate_objects_options::component_spacing`}
+    \cgalParamExtra{must be positive; a parameter of its own, finer by default than the
+      `component_spacing` of `remove_background()` (`Remove_background_options::component_spacing`)}
   \cgalParamNEnd
   \cgalParamNBegin{localization_cell_size}
     \cgalParamDescription{the side of the voxels of the normalized cut and of the cells of the height image, in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.15`}
+    \cgalParamDefault{`Locate_objects_options::localization_cell_size`}
     \cgalParamExtra{must be positive; the height image may hold at most \f$2 \cdot 10^8\f$ cells}
   \cgalParamNEnd
   \cgalParamNBegin{normalized_cut_threshold}
     \cgalParamDescription{two clusters merge only if the normalized cut between them is at least this (larger: more, smaller clusters)}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.002`}
+    \cgalParamDefault{`Locate_objects_options::normalized_cut_threshold`}
     \cgalParamExtra{must be non-negative}
   \cgalParamNEnd
   \cgalParamNBegin{height_image_sigma}
     \cgalParamDescription{the standard deviation of the smaller Gaussian of the difference of Gaussians (the larger one is three times wider), in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.2`}
+    \cgalParamDefault{`Locate_objects_options::height_image_sigma`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
   \cgalParamNBegin{height_image_threshold}
     \cgalParamDescription{the response of the difference of Gaussians above which a cell belongs to an object, in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.02`}
+    \cgalParamDefault{`Locate_objects_options::height_image_threshold`}
     \cgalParamExtra{must be finite}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
     \cgalParamDescription{the largest number of threads (0: TBB's choice, 1: the calling thread only)}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`0`}
+    \cgalParamDefault{`Locate_objects_options::number_of_threads`}
   \cgalParamNEnd
   \cgalParamNBegin{minimum_cluster_size}
     \cgalParamDescription{clusters with fewer points are rejected}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`10`}
+    \cgalParamDefault{`Locate_objects_options::minimum_cluster_size`}
   \cgalParamNEnd
   \cgalParamNBegin{maximum_cluster_height}
     \cgalParamDescription{clusters with a larger vertical extent are rejected, in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`12`}
+    \cgalParamDefault{`Locate_objects_options::maximum_cluster_height`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
 \cgalNamedParamsEnd
@@ -318,34 +383,21 @@ for any number of threads.
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 Localization_result locate_objects(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
-  namespace SAI = CGAL::Shape_analysis::internal;
-  namespace snp = CGAL::Shape_analysis::internal_np;
-  internal::Localization_options o;
-  o.spacing = SAI::parameter_value<double>(np, snp::component_spacing_tag, 0.3);
-  o.minimum = SAI::parameter_value<std::size_t>(np, snp::minimum_cluster_size_tag, std::size_t(10));
-  o.tallest = SAI::parameter_value<double>(np, snp::maximum_cluster_height_tag, 12.0);
-  o.method = SAI::parameter_value<Localization_method>(np, snp::localization_method_tag,
-                                                       Localization_method::CONNECTED_COMPONENTS);
-  o.shift_radius = SAI::parameter_value<double>(np, snp::mean_shift_radius_tag, 2.0);
-  o.cell = SAI::parameter_value<double>(np, snp::localization_cell_size_tag, 0.15);
-  o.cut_threshold = SAI::parameter_value<double>(np, snp::normalized_cut_threshold_tag, 0.002);
-  o.sigma = SAI::parameter_value<double>(np, snp::height_image_sigma_tag, 0.2);
-  o.image_threshold = SAI::parameter_value<double>(np, snp::height_image_threshold_tag, 0.02);
-  o.threads = SAI::parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
+  const Locate_objects_options o = locate_objects_options(np);
   const auto positive = [](double v) { return v > 0 && std::isfinite(v); };
-  if(!positive(o.shift_radius))
+  if(!positive(o.mean_shift_radius))
     throw Bad_input("locate_objects: mean_shift_radius must be a positive number");
-  if(!positive(o.spacing))
+  if(!positive(o.component_spacing))
     throw Bad_input("locate_objects: component_spacing must be a positive number");
-  if(!positive(o.tallest))
+  if(!positive(o.maximum_cluster_height))
     throw Bad_input("locate_objects: maximum_cluster_height must be a positive number");
-  if(!positive(o.cell))
+  if(!positive(o.localization_cell_size))
     throw Bad_input("locate_objects: localization_cell_size must be a positive number");
-  if(!(o.cut_threshold >= 0) || !std::isfinite(o.cut_threshold))
+  if(!(o.normalized_cut_threshold >= 0) || !std::isfinite(o.normalized_cut_threshold))
     throw Bad_input("locate_objects: normalized_cut_threshold must be a non-negative number");
-  if(!positive(o.sigma))
+  if(!positive(o.height_image_sigma))
     throw Bad_input("locate_objects: height_image_sigma must be a positive number");
-  if(!std::isfinite(o.image_threshold))
+  if(!std::isfinite(o.height_image_threshold))
     throw Bad_input("locate_objects: height_image_threshold must be a finite number");
   return internal::locate_objects(internal::point_arrays(points, np), o);
 }

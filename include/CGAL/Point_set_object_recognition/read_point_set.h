@@ -22,6 +22,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,45 @@ struct Point_set_read_result
   /// (for example `"normal"`, `"intensity"`, `"classification"`, `"red"`).
   std::vector<std::string> property_names;
 };
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+
+The options of `read_point_set()`: each member is the named parameter of the same name,
+initialized to its default. This struct is where the defaults are written; the manual and
+`read_point_set_options()` take them from here.
+*/
+struct Read_point_set_options
+{
+  /// whether the points are shifted to a local origin; `false` keeps the coordinates of the file
+  bool shift_to_local_origin = true;
+  /// the local origin subtracted from every point (finite); none: the automatic one (per axis, 0
+  /// for coordinates below \f$ 10^5 \f$ in absolute value, else the minimum rounded down to a
+  /// multiple of 100)
+  std::optional<std::array<double, 3>> local_origin;
+};
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+
+The options that `read_point_set()` reads from the named parameters `np`: the value of each named
+parameter given, the default of `Read_point_set_options` for the others. The values are not
+checked here; `read_point_set()` checks them.
+
+\tparam NamedParameters a sequence of named parameters
+\param np the named parameters of `read_point_set()`
+\returns the options
+*/
+template <typename NamedParameters = parameters::Default_named_parameters>
+Read_point_set_options read_point_set_options(const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::Shape_analysis::internal::parameter_value;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  Read_point_set_options o;
+  o.shift_to_local_origin = parameter_value(np, snp::shift_to_local_origin_tag, o.shift_to_local_origin);
+  o.local_origin = parameter_value(np, snp::local_origin_tag, o.local_origin);
+  return o;
+}
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
@@ -93,19 +133,12 @@ inline void bounding_box(const std::vector<double>& xyz, std::array<double, 3>& 
 }
 
 // The origin to subtract: none, the one given, or the automatic one.
-template <typename NamedParameters>
-std::array<double, 3> choose_local_origin(const NamedParameters& np, const std::array<double, 3>& lo,
-                                          const std::array<double, 3>& hi)
+inline std::array<double, 3> choose_local_origin(const Read_point_set_options& o, const std::array<double, 3>& lo,
+                                                 const std::array<double, 3>& hi)
 {
-  namespace snp = CGAL::Shape_analysis::internal_np;
-  if(!CGAL::Shape_analysis::internal::parameter_value<bool>(np, snp::shift_to_local_origin_tag, true))
+  if(!o.shift_to_local_origin)
     return {{0, 0, 0}};
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, snp::local_origin_t>::value) {
-    const std::array<double, 3> o = CGAL::parameters::get_parameter(np, snp::local_origin_tag);
-    return o;
-  } else {
-    return automatic_local_origin(lo, hi);
-  }
+  return o.local_origin ? *o.local_origin : automatic_local_origin(lo, hi);
 }
 
 // Appends the points (x, y, z) - origin, the subtraction done in double.
@@ -131,9 +164,9 @@ void add_property(CGAL::Point_set_3<Point>& points, const std::string& name, con
 }
 
 // Reads a PLY or XYZ file with CGAL's readers, then shifts the points to their local origin.
-template <typename Point, typename NamedParameters>
+template <typename Point>
 std::array<double, 3> read_with_cgal(const std::string& filename, bool ply, CGAL::Point_set_3<Point>& points,
-                                     const NamedParameters& np)
+                                     const Read_point_set_options& options)
 {
   typedef typename CGAL::Kernel_traits<Point>::Kernel::FT FT;
   if(!std::ifstream(filename))
@@ -149,7 +182,7 @@ std::array<double, 3> read_with_cgal(const std::string& filename, bool ply, CGAL
     xyz.insert(xyz.end(), {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
   }
   bounding_box(xyz, lo, hi);
-  const std::array<double, 3> o = choose_local_origin(np, lo, hi);
+  const std::array<double, 3> o = choose_local_origin(options, lo, hi);
   if(o[0] != 0 || o[1] != 0 || o[2] != 0) {
     std::size_t k = 0;
     for(typename CGAL::Point_set_3<Point>::Index i : points) {
@@ -206,14 +239,13 @@ gives the coordinates of the file.
     \cgalParamDescription{whether the points are shifted to a local origin; `false` keeps the
       coordinates of the file}
     \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
+    \cgalParamDefault{`Read_point_set_options::shift_to_local_origin`}
   \cgalParamNEnd
   \cgalParamNBegin{local_origin}
     \cgalParamDescription{the local origin subtracted from every point, instead of the automatic
       one described above}
     \cgalParamType{`std::array<double, 3>`}
-    \cgalParamDefault{automatic: per axis, 0 for coordinates below \f$ 10^5 \f$ in absolute value,
-      else the minimum rounded down to a multiple of 100}
+    \cgalParamDefault{`Read_point_set_options::local_origin`: none, that is the automatic origin}
     \cgalParamExtra{must be finite; cannot be combined with `shift_to_local_origin(false)`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
@@ -229,13 +261,13 @@ template <typename Point, typename NamedParameters = parameters::Default_named_p
 Point_set_read_result read_point_set(const std::string& filename, CGAL::Point_set_3<Point>& points,
                                      const NamedParameters& np = parameters::default_values())
 {
-  namespace snp = CGAL::Shape_analysis::internal_np;
   const std::string who = "read_point_set: ";
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, snp::local_origin_t>::value) {
-    const std::array<double, 3> o = CGAL::parameters::get_parameter(np, snp::local_origin_tag);
+  const Read_point_set_options options = read_point_set_options(np);
+  if(options.local_origin) {
+    const std::array<double, 3>& o = *options.local_origin;
     if(!std::isfinite(o[0]) || !std::isfinite(o[1]) || !std::isfinite(o[2]))
       throw Bad_input(who + "local_origin must be finite");
-    if(!CGAL::Shape_analysis::internal::parameter_value<bool>(np, snp::shift_to_local_origin_tag, true))
+    if(!options.shift_to_local_origin)
       throw Bad_input(who + "local_origin is given but shift_to_local_origin is false");
   }
 
@@ -259,11 +291,11 @@ Point_set_read_result read_point_set(const std::string& filename, CGAL::Point_se
   try {
     std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
     if(result.format == "ply" || result.format == "xyz") {
-      result.offset = internal::read_with_cgal(filename, result.format == "ply", points, np);
+      result.offset = internal::read_with_cgal(filename, result.format == "ply", points, options);
     } else if(result.format == "las") {
       const internal::Las_data d = internal::read_las(filename);
       internal::bounding_box(d.xyz, lo, hi);
-      result.offset = internal::choose_local_origin(np, lo, hi);
+      result.offset = internal::choose_local_origin(options, lo, hi);
       internal::add_points(points, d.xyz, result.offset);
       internal::add_property(points, "intensity", d.intensity);
       internal::add_property(points, "classification", d.classification);
@@ -276,7 +308,7 @@ Point_set_read_result read_point_set(const std::string& filename, CGAL::Point_se
     } else {
       const internal::Kitti_data d = internal::read_kitti(filename);
       internal::bounding_box(d.xyz, lo, hi);
-      result.offset = internal::choose_local_origin(np, lo, hi);
+      result.offset = internal::choose_local_origin(options, lo, hi);
       internal::add_points(points, d.xyz, result.offset);
       internal::add_property(points, "reflectance", d.reflectance);
     }

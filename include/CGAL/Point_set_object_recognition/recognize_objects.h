@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -59,19 +60,97 @@ struct Object_recognition_result
   double seconds = 0;              ///< the whole call
 };
 
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+
+The options of `recognize_objects()`: each member is the named parameter of the same name,
+initialized to its default. This struct is where the defaults are written; the manual,
+`recognize_objects_options()` and the `shape_analysis points recognize` command take them from
+here. The segmentation's defaults are those of `segment_objects()` (`Segment_objects_options`);
+the localization's method has a default of its own (the thesis' method, rather than the faster
+default of `locate_objects()`). The other parameters of the three stages take the defaults of
+`Remove_background_options`, `Locate_objects_options` and `Segment_objects_options`.
+*/
+struct Recognize_objects_options
+{
+  /// the side of the tiles, in metres (positive)
+  double tile_size = 100;
+  /// the width of the band around a tile whose points it is processed with, in metres (zero or
+  /// positive)
+  double tile_margin = 10;
+  /// a corner (x, y) of the grid of tiles (finite); none: the lower corner of the points'
+  /// horizontal bounding box
+  std::optional<std::array<double, 2>> tile_origin;
+  /// how `locate_objects()` groups the foreground points
+  Localization_method localization_method = Localization_method::NORMALIZED_CUT;
+  /// how `segment_objects()` separates each object
+  Segmentation_method segmentation_method = Segment_objects_options().segmentation_method;
+  /// the background radius of the segmentation methods other than the automatic one, in metres
+  /// (positive)
+  double background_radius = Segment_objects_options().background_radius;
+  /// the largest number of threads of the loop over the tiles and of each stage within a tile
+  /// (0: TBB's choice)
+  std::size_t number_of_threads = 0;
+};
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+
+The options that `recognize_objects()` reads from the named parameters `np`: the value of each
+named parameter given, the default of `Recognize_objects_options` for the others. The values are
+not checked here; `recognize_objects()` checks them. Named parameters that are not options
+(property maps) are ignored.
+
+\tparam NamedParameters a sequence of named parameters
+\param np the named parameters of `recognize_objects()`
+\returns the options
+*/
+template <typename NamedParameters = parameters::Default_named_parameters>
+Recognize_objects_options recognize_objects_options(const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::Shape_analysis::internal::parameter_value;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  Recognize_objects_options o;
+  o.tile_size = parameter_value(np, snp::tile_size_tag, o.tile_size);
+  o.tile_margin = parameter_value(np, snp::tile_margin_tag, o.tile_margin);
+  o.tile_origin = parameter_value(np, snp::tile_origin_tag, o.tile_origin);
+  o.localization_method = parameter_value(np, snp::localization_method_tag, o.localization_method);
+  o.segmentation_method = parameter_value(np, snp::segmentation_method_tag, o.segmentation_method);
+  o.background_radius = parameter_value(np, snp::background_radius_tag, o.background_radius);
+  o.number_of_threads = parameter_value(np, snp::number_of_threads_tag, o.number_of_threads);
+  return o;
+}
+
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-struct Recognition_options
+// The options of recognize_objects() and those of its three stages within a tile.
+struct Recognition_options : Recognize_objects_options
 {
-  double tile = 100, margin = 10;
-  std::size_t threads = 0; // of the loop over the tiles
-  bool origin_given = false;
-  std::array<double, 2> origin{{0, 0}};
-  Background_options background;
-  Localization_options localization;
-  Segmentation_options segmentation;
+  Remove_background_options background;
+  Locate_objects_options localization;
+  Segment_objects_options segmentation;
 };
+
+// The options of the stages from those of recognize_objects(), checked (Bad_input).
+inline Recognition_options recognition_options(const Recognize_objects_options& r)
+{
+  if(r.tile_origin && (!std::isfinite((*r.tile_origin)[0]) || !std::isfinite((*r.tile_origin)[1])))
+    throw Bad_input("recognize_objects: tile_origin must be finite");
+  if(!(r.tile_size > 0) || !std::isfinite(r.tile_size))
+    throw Bad_input("recognize_objects: tile_size must be a positive number");
+  if(!(r.tile_margin >= 0) || !std::isfinite(r.tile_margin))
+    throw Bad_input("recognize_objects: tile_margin must be zero or a positive number");
+  Recognition_options o;
+  static_cast<Recognize_objects_options&>(o) = r;
+  o.localization.localization_method = r.localization_method;
+  o.localization.number_of_threads = r.number_of_threads;
+  o.segmentation.segmentation_method = r.segmentation_method;
+  o.segmentation.background_radius = r.background_radius;
+  o.segmentation.number_of_threads = r.number_of_threads;
+  check_segmentation_options(o.segmentation, "recognize_objects");
+  return o;
+}
 
 // Tiles of side `side` from `lo`, `n` of them along each axis (clamped: a
 // coordinate rounded out of the grid belongs to the nearest tile).
@@ -111,11 +190,12 @@ Tile_grid scene_tiles(std::size_t n, const PointAt& point, const Recognition_opt
   // separate runs on parts of a scene have the same tiles).
   Tile_grid grid;
   grid.lo = lo;
-  if(o.origin_given)
+  if(o.tile_origin)
     for(int c = 0; c < 2; ++c)
-      grid.lo[c] = o.origin[c] + std::floor((lo[c] - o.origin[c]) / o.tile) * o.tile;
-  grid.side = o.tile;
-  const double nx = std::floor((hi[0] - grid.lo[0]) / o.tile) + 1, ny = std::floor((hi[1] - grid.lo[1]) / o.tile) + 1;
+      grid.lo[c] = (*o.tile_origin)[c] + std::floor((lo[c] - (*o.tile_origin)[c]) / o.tile_size) * o.tile_size;
+  grid.side = o.tile_size;
+  const double nx = std::floor((hi[0] - grid.lo[0]) / o.tile_size) + 1,
+               ny = std::floor((hi[1] - grid.lo[1]) / o.tile_size) + 1;
   if(!(nx * ny <= 1e8))
     throw Bad_input("recognize_objects: more than 10^8 tiles (use a larger tile_size)");
   grid.nx = long(nx), grid.ny = long(ny);
@@ -197,9 +277,9 @@ void process_tile(std::size_t t, long reach, const Tile_grid& grid, const std::v
   const long tx = long(t % std::size_t(grid.nx)), ty = long(t / std::size_t(grid.nx));
   const auto tile_start = std::chrono::steady_clock::now();
   Scene_tile& tile = out.tile;
-  tile.min = {{grid.lo[0] + double(tx) * o.tile, grid.lo[1] + double(ty) * o.tile}};
-  tile.max = {{tile.min[0] + o.tile, tile.min[1] + o.tile}};
-  const std::vector<std::uint32_t> local = tile_points(t, tile, reach, grid, first, order, point, o.margin);
+  tile.min = {{grid.lo[0] + double(tx) * o.tile_size, grid.lo[1] + double(ty) * o.tile_size}};
+  tile.max = {{tile.min[0] + o.tile_size, tile.min[1] + o.tile_size}};
+  const std::vector<std::uint32_t> local = tile_points(t, tile, reach, grid, first, order, point, o.tile_margin);
   std::vector<P3> q(local.size());
   for(std::size_t k = 0; k < local.size(); ++k)
     q[k] = point(local[k]);
@@ -296,7 +376,7 @@ Object_recognition_result recognize_objects(std::size_t n, const PointAt& point,
   r.object_of_point.assign(n, Object_recognition_result::no_object);
   r.kind.assign(n, Point_kind::GROUND);
   // The tiles whose points can lie within the margin (bounded by the grid: any margin is valid).
-  const long reach = long((std::min)(std::floor(o.margin / o.tile) + 1, double((std::max)(grid.nx, grid.ny))));
+  const long reach = long((std::min)(std::floor(o.tile_margin / o.tile_size) + 1, double((std::max)(grid.nx, grid.ny))));
   // The tiles run in parallel (each with its own buffers, freed when it ends, and its stages with
   // `number_of_threads`); their locations and objects are merged in the order of the tiles, so
   // that the result does not depend on the number of threads.
@@ -305,7 +385,7 @@ Object_recognition_result recognize_objects(std::size_t n, const PointAt& point,
     if(first[t] != first[t + 1])
       busy.push_back(t);
   std::vector<Tile_output> outputs(busy.size());
-  CGAL::Shape_analysis::internal::Parallel_workspaces<char> parallel(o.threads);
+  CGAL::Shape_analysis::internal::Parallel_workspaces<char> parallel(o.number_of_threads);
   parallel.for_each(0, busy.size(), [&](std::size_t b, char&) {
     process_tile(busy[b], reach, grid, first, order, point, o, r.kind, outputs[b]);
   });
@@ -324,36 +404,6 @@ Object_recognition_result recognize_objects_of_range(const PointRange& points, c
     const auto& q = get(point_map, *(begin + std::ptrdiff_t(i)));
     return P3{{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
   }, o);
-}
-
-template <typename NamedParameters>
-Recognition_options recognition_options(const NamedParameters& np)
-{
-  namespace SAI = CGAL::Shape_analysis::internal;
-  namespace snp = CGAL::Shape_analysis::internal_np;
-  Recognition_options o;
-  o.tile = SAI::parameter_value<double>(np, snp::tile_size_tag, 100.0);
-  o.margin = SAI::parameter_value<double>(np, snp::tile_margin_tag, 10.0);
-  o.origin_given = !CGAL::parameters::is_default_parameter<NamedParameters, snp::tile_origin_t>::value;
-  o.origin = SAI::parameter_value<std::array<double, 2>>(np, snp::tile_origin_tag, std::array<double, 2>{{0, 0}});
-  if(!std::isfinite(o.origin[0]) || !std::isfinite(o.origin[1]))
-    throw Bad_input("recognize_objects: tile_origin must be finite");
-  if(!(o.tile > 0) || !std::isfinite(o.tile))
-    throw Bad_input("recognize_objects: tile_size must be a positive number");
-  if(!(o.margin >= 0) || !std::isfinite(o.margin))
-    throw Bad_input("recognize_objects: tile_margin must be zero or a positive number");
-  const std::size_t threads = SAI::parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
-  o.localization.method = SAI::parameter_value<Localization_method>(np, snp::localization_method_tag,
-                                                                    Localization_method::NORMALIZED_CUT);
-  o.threads = threads;
-  o.localization.threads = threads;
-  o.segmentation = segmentation_options(
-    parameters::segmentation_method(SAI::parameter_value<Segmentation_method>(
-                                      np, snp::segmentation_method_tag, Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS))
-      .background_radius(SAI::parameter_value<double>(np, snp::background_radius_tag, 2.0))
-      .number_of_threads(threads),
-    "recognize_objects");
-  return o;
 }
 
 } // namespace internal
@@ -400,50 +450,52 @@ same relative order).
   \cgalParamNBegin{tile_size}
     \cgalParamDescription{the side of the tiles, in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`100`}
+    \cgalParamDefault{`Recognize_objects_options::tile_size`}
     \cgalParamExtra{must be positive; the whole scene is one tile when it is larger than the scene}
   \cgalParamNEnd
   \cgalParamNBegin{tile_margin}
     \cgalParamDescription{the width of the band around a tile whose points it is processed with, in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`10`}
+    \cgalParamDefault{`Recognize_objects_options::tile_margin`}
     \cgalParamExtra{must be zero or positive; below the segmentation's reach (7 m), objects near a
-      border lose their surroundings; below the background removal's `maximum_component_extent`
-      (12 m), a building that only pokes into the margin may be kept as foreground there (it
+      border lose their surroundings; below the background removal's `maximum_component_extent`,
+      a building that only pokes into the margin may be kept as foreground there (it
       does not change the tile's own points' kinds, only what its localization sees)}
   \cgalParamNEnd
   \cgalParamNBegin{tile_origin}
     \cgalParamDescription{a corner of the grid of tiles (x, y): the tiles are the squares of side
       `tile_size` whose corners are this point plus multiples of `tile_size`}
     \cgalParamType{`std::array<double, 2>`}
-    \cgalParamDefault{the lower corner of the points' horizontal bounding box}
+    \cgalParamDefault{`Recognize_objects_options::tile_origin`: none, that is the lower corner of
+      the points' horizontal bounding box}
     \cgalParamExtra{must be finite}
   \cgalParamNEnd
   \cgalParamNBegin{localization_method}
     \cgalParamDescription{how `locate_objects()` groups the foreground points}
     \cgalParamType{`Localization_method`}
-    \cgalParamDefault{`Localization_method::NORMALIZED_CUT` (the thesis' method)}
+    \cgalParamDefault{`Recognize_objects_options::localization_method`}
   \cgalParamNEnd
   \cgalParamNBegin{segmentation_method}
     \cgalParamDescription{how `segment_objects()` separates each object}
     \cgalParamType{`Segmentation_method`}
-    \cgalParamDefault{`Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS`}
+    \cgalParamDefault{`Recognize_objects_options::segmentation_method`}
   \cgalParamNEnd
   \cgalParamNBegin{background_radius}
     \cgalParamDescription{the background radius of the segmentation methods other than the automatic one, in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`2`}
+    \cgalParamDefault{`Recognize_objects_options::background_radius`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
     \cgalParamDescription{the largest number of threads of the loop over the tiles and of each stage
       within a tile (0: TBB's choice); the results do not depend on it}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`0`}
+    \cgalParamDefault{`Recognize_objects_options::number_of_threads`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-The other parameters of the three stages take their defaults.
+The other parameters of the three stages take the defaults of `Remove_background_options`,
+`Locate_objects_options` and `Segment_objects_options`.
 
 \returns the locations, one segmentation per location, the object and the kind of every point,
          and the tiles with their sizes and times
@@ -460,7 +512,8 @@ Object_recognition_result recognize_objects(const PointRange& points,
   typedef typename std::iterator_traits<typename PointRange::const_iterator>::value_type Value;
   const auto point_map = CGAL::parameters::choose_parameter(
     CGAL::parameters::get_parameter(np, CGAL::internal_np::point_map), CGAL::Identity_property_map<Value>());
-  return internal::recognize_objects_of_range(points, point_map, internal::recognition_options(np));
+  return internal::recognize_objects_of_range(points, point_map,
+                                             internal::recognition_options(recognize_objects_options(np)));
 }
 
 /// \ingroup PkgPointSetObjectRecognitionRef
@@ -475,7 +528,8 @@ template <typename Point, typename Vector, typename NamedParameters = parameters
 Object_recognition_result recognize_objects(const CGAL::Point_set_3<Point, Vector>& point_set,
                                             const NamedParameters& np = parameters::default_values())
 {
-  return internal::recognize_objects_of_range(point_set, point_set.point_map(), internal::recognition_options(np));
+  return internal::recognize_objects_of_range(point_set, point_set.point_map(),
+                                             internal::recognition_options(recognize_objects_options(np)));
 }
 
 } // namespace Point_set_object_recognition

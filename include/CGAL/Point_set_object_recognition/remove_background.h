@@ -13,6 +13,7 @@
 
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/parameters.h>
+#include <CGAL/Point_set_object_recognition/Remove_background_options.h>
 #include <CGAL/Point_set_object_recognition/internal/Background_removal.h>
 #include <CGAL/Point_set_object_recognition/internal/Voxel_grid.h>
 
@@ -28,7 +29,6 @@
 namespace CGAL {
 namespace Point_set_object_recognition {
 
-namespace parameters = CGAL::Shape_analysis::parameters;
 using CGAL::Shape_analysis::Bad_input;
 
 /// \ingroup PkgPointSetObjectRecognitionRef
@@ -134,12 +134,12 @@ inline void fit_cell_ground(const std::vector<std::array<double, 3>>& p, const B
   const std::size_t none = std::size_t(-1);
   std::vector<std::size_t>& column_point = buffers.column_point;
   std::vector<std::size_t>& lowest = buffers.lowest;
-  const double xa = g.x0 + double(c % g.nx) * o.cell, ya = g.y0 + double(c / g.nx) * o.cell;
+  const double xa = g.x0 + double(c % g.nx) * o.ground_cell_size, ya = g.y0 + double(c / g.nx) * o.ground_cell_size;
   column_point.assign(columns * columns, none);
   for(std::size_t k = 0; k < count; ++k) {
     const std::size_t i = points[k];
     const auto sub = [&](double t) {
-      return (std::min)(columns - 1, std::size_t((std::max)(0.0, t) * double(columns) / o.cell));
+      return (std::min)(columns - 1, std::size_t((std::max)(0.0, t) * double(columns) / o.ground_cell_size));
     };
     std::size_t& best = column_point[sub(p[i][0] - xa) + columns * sub(p[i][1] - ya)];
     if(best == none || p[i][2] < p[best][2] || (p[i][2] == p[best][2] && i < best))
@@ -160,7 +160,7 @@ inline void fit_cell_ground(const std::vector<std::array<double, 3>>& p, const B
   std::nth_element(zs.begin(), zs.begin() + long(q), zs.end());
   std::array<double, 3> plane{{0, 0, zs[q]}};
   bool fitted = false;
-  const double cx = xa + 0.5 * o.cell, cy = ya + 0.5 * o.cell;
+  const double cx = xa + 0.5 * o.ground_cell_size, cy = ya + 0.5 * o.ground_cell_size;
   for(double band : {1.0, 0.5, 0.3, 0.2}) {
     buffers.near.clear();
     for(std::size_t i : lowest) {
@@ -169,7 +169,7 @@ inline void fit_cell_ground(const std::vector<std::array<double, 3>>& p, const B
         buffers.near.push_back(i);
     }
     std::array<double, 3> next;
-    if(!fit_plane(p, buffers.near, cx, cy, o.cell / 8, next))
+    if(!fit_plane(p, buffers.near, cx, cy, o.ground_cell_size / 8, next))
       break;
     plane = next;
     fitted = true;
@@ -259,22 +259,22 @@ inline void fill_ground(Ground_grid& g, double cell, const std::vector<char>& va
 inline void estimate_ground(const std::vector<std::array<double, 3>>& p, const Background_options& o,
                             const std::array<double, 3>& lo, const std::array<double, 3>& hi, Ground_grid& g)
 {
-  g.cell_size = o.cell;
+  g.cell_size = o.ground_cell_size;
   g.x0 = lo[0];
   g.y0 = lo[1];
-  g.nx = std::size_t((hi[0] - lo[0]) / o.cell) + 1;
-  g.ny = std::size_t((hi[1] - lo[1]) / o.cell) + 1;
+  g.nx = std::size_t((hi[0] - lo[0]) / o.ground_cell_size) + 1;
+  g.ny = std::size_t((hi[1] - lo[1]) / o.ground_cell_size) + 1;
   const std::size_t cells = g.nx * g.ny;
   std::vector<std::size_t> start, order;
-  sort_by_cell(p, g, o.cell, start, order);
+  sort_by_cell(p, g, o.ground_cell_size, start, order);
   g.planes.assign(cells, {0, 0, 0});
   std::vector<char> valid(cells, 0);
   Cell_ground_buffers buffers;
   for(std::size_t c = 0; c < cells; ++c)
     if(start[c + 1] - start[c] >= 3)
       fit_cell_ground(p, o, c, order.data() + start[c], start[c + 1] - start[c], g, valid, buffers);
-  std::vector<char> keep = grounded_cells(g, o.cell, valid);
-  fill_ground(g, o.cell, valid, keep);
+  std::vector<char> keep = grounded_cells(g, o.ground_cell_size, valid);
+  fill_ground(g, o.ground_cell_size, valid, keep);
 }
 
 // 2. Isolated points: too few other non-ground points in the voxels around them.
@@ -286,7 +286,7 @@ inline void mark_isolated(const std::vector<std::array<double, 3>>& p, const Bac
   count.reserve(n - r.number_of_ground_points);
   for(std::size_t i = 0; i < n; ++i)
     if(r.kind[i] == Point_kind::FOREGROUND)
-      ++count[voxel_key(p[i][0], p[i][1], p[i][2], o.isolation, lo)];
+      ++count[voxel_key(p[i][0], p[i][1], p[i][2], o.isolation_radius, lo)];
   std::unordered_map<std::uint64_t, std::uint32_t> around;
   around.reserve(count.size());
   for(const auto& kv : count) {
@@ -302,7 +302,7 @@ inline void mark_isolated(const std::vector<std::array<double, 3>>& p, const Bac
   }
   for(std::size_t i = 0; i < n; ++i)
     if(r.kind[i] == Point_kind::FOREGROUND &&
-       around[voxel_key(p[i][0], p[i][1], p[i][2], o.isolation, lo)] < o.neighbors + 1) {
+       around[voxel_key(p[i][0], p[i][1], p[i][2], o.isolation_radius, lo)] < o.minimum_neighbors + 1) {
       r.kind[i] = Point_kind::ISOLATED;
       ++r.number_of_isolated_points;
     }
@@ -320,12 +320,12 @@ inline void mark_large_components(const std::vector<std::array<double, 3>>& p, c
   for(std::size_t i = 0; i < n; ++i)
     remaining[i] = r.kind[i] == Point_kind::FOREGROUND;
   std::size_t components = 0;
-  const std::vector<std::uint32_t> component = voxel_components(p, remaining, o.spacing, lo, components);
+  const std::vector<std::uint32_t> component = voxel_components(p, remaining, o.component_spacing, lo, components);
   const std::vector<Component_box> box = component_boxes(p, r.height_above_ground, remaining, component, components);
   std::vector<char> large(n, 0);
   for(std::size_t i = 0; i < n; ++i)
     if(remaining[i])
-      large[i] = box[component[i]].width() > o.extent ? 1 : 0;
+      large[i] = box[component[i]].width() > o.maximum_component_extent ? 1 : 0;
   peel_walls(p, r.height_above_ground, o, lo, large);
   for(std::size_t i = 0; i < n; ++i) {
     if(!remaining[i])
@@ -348,11 +348,11 @@ inline Background_removal_result remove_background(const std::vector<std::array<
   if(n == 0)
     return r;
   std::array<double, 3> lo, hi;
-  checked_bounds(p, (std::min)(o.cell, (std::min)(o.isolation, o.spacing)), "remove_background", lo, hi);
+  checked_bounds(p, (std::min)(o.ground_cell_size, (std::min)(o.isolation_radius, o.component_spacing)), "remove_background", lo, hi);
   estimate_ground(p, o, lo, hi, r.ground);
   for(std::size_t i = 0; i < n; ++i) {
     r.height_above_ground[i] = p[i][2] - r.ground.height(p[i][0], p[i][1]);
-    if(r.height_above_ground[i] < o.threshold) {
+    if(r.height_above_ground[i] < o.ground_threshold) {
       r.kind[i] = Point_kind::GROUND;
       ++r.number_of_ground_points;
     }
@@ -410,35 +410,37 @@ points (up to the rounding of the plane fits).
   \cgalParamNBegin{ground_cell_size}
     \cgalParamDescription{the side of the cells of the ground grid, in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`5`}
+    \cgalParamDefault{`Remove_background_options::ground_cell_size`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
   \cgalParamNBegin{ground_threshold}
     \cgalParamDescription{points less than this above the ground are ground, in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.2`}
+    \cgalParamDefault{`Remove_background_options::ground_threshold`}
   \cgalParamNEnd
   \cgalParamNBegin{isolation_radius}
     \cgalParamDescription{the side of the voxels in which neighbours are counted, in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.5`}
+    \cgalParamDefault{`Remove_background_options::isolation_radius`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
   \cgalParamNBegin{minimum_neighbors}
     \cgalParamDescription{a point with fewer neighbours is isolated (0: none is)}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`3`}
+    \cgalParamDefault{`Remove_background_options::minimum_neighbors`}
   \cgalParamNEnd
   \cgalParamNBegin{component_spacing}
     \cgalParamDescription{the side of the voxels whose contact makes connected components, in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.5`}
-    \cgalParamExtra{must be positive}
+    \cgalParamDefault{`Remove_background_options::component_spacing`}
+    \cgalParamExtra{must be positive; a parameter of its own, coarser by default than the
+      `component_spacing` that groups objects in `locate_objects()` and `segment_objects()`
+      (`Locate_objects_options::component_spacing`)}
   \cgalParamNEnd
   \cgalParamNBegin{maximum_component_extent}
     \cgalParamDescription{components with a wider horizontal bounding box are removed, in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`12`}
+    \cgalParamDefault{`Remove_background_options::maximum_component_extent`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
 \cgalNamedParamsEnd
@@ -454,25 +456,17 @@ template <typename PointRange, typename NamedParameters = parameters::Default_na
 Background_removal_result remove_background(const PointRange& points,
                                             const NamedParameters& np = parameters::default_values())
 {
-  namespace SAI = CGAL::Shape_analysis::internal;
-  namespace snp = CGAL::Shape_analysis::internal_np;
-  internal::Background_options o;
-  o.cell = SAI::parameter_value<double>(np, snp::ground_cell_size_tag, 5.0);
-  o.threshold = SAI::parameter_value<double>(np, snp::ground_threshold_tag, 0.2);
-  o.isolation = SAI::parameter_value<double>(np, snp::isolation_radius_tag, 0.5);
-  o.neighbors = SAI::parameter_value<std::size_t>(np, snp::minimum_neighbors_tag, std::size_t(3));
-  o.spacing = SAI::parameter_value<double>(np, snp::component_spacing_tag, 0.5);
-  o.extent = SAI::parameter_value<double>(np, snp::maximum_component_extent_tag, 12.0);
+  const Remove_background_options o = remove_background_options(np);
   const auto positive = [](double v) { return v > 0 && std::isfinite(v); };
-  if(!positive(o.cell))
+  if(!positive(o.ground_cell_size))
     throw Bad_input("remove_background: ground_cell_size must be a positive number");
-  if(!std::isfinite(o.threshold))
+  if(!std::isfinite(o.ground_threshold))
     throw Bad_input("remove_background: ground_threshold must be a finite number");
-  if(!positive(o.isolation))
+  if(!positive(o.isolation_radius))
     throw Bad_input("remove_background: isolation_radius must be a positive number");
-  if(!positive(o.spacing))
+  if(!positive(o.component_spacing))
     throw Bad_input("remove_background: component_spacing must be a positive number");
-  if(!positive(o.extent))
+  if(!positive(o.maximum_component_extent))
     throw Bad_input("remove_background: maximum_component_extent must be a positive number");
   return internal::remove_background(internal::point_arrays(points, np), o);
 }

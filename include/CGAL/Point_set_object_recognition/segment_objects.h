@@ -12,6 +12,7 @@
 #include <CGAL/Point_set_3.h>
 #include <CGAL/property_map.h>
 
+#include <CGAL/Point_set_object_recognition/Segment_objects_options.h>
 #include <CGAL/Point_set_object_recognition/internal/Interactive_min_cut.h>
 #include <CGAL/Point_set_object_recognition/internal/Object_segmentation.h>
 #include <CGAL/Point_set_object_recognition/internal/Voxel_grid.h>
@@ -37,17 +38,7 @@
 namespace CGAL {
 namespace Point_set_object_recognition {
 
-namespace parameters = CGAL::Shape_analysis::parameters;
 using CGAL::Shape_analysis::Bad_input;
-
-/// \ingroup PkgPointSetObjectRecognitionRef
-/// How `segment_objects()` separates an object from its surroundings.
-enum class Segmentation_method {
-  ALL_WITHIN_RADIUS,       ///< every point within `background_radius` (horizontally) of the location
-  CONNECTED_COMPONENTS,    ///< the points within `background_radius` connected to the hard foreground (voxels of `component_spacing`)
-  MIN_CUT,                 ///< the minimum cut with the background radius `background_radius`
-  MIN_CUT_AUTOMATIC_RADIUS ///< the minimum cut with a background radius of 1, 2, 3, 4 or 5 m chosen per object
-};
 
 /// \ingroup PkgPointSetObjectRecognitionRef
 /// The segmentation of one object (`segment_object()`, `segment_objects()`, `Interactive_segmenter`).
@@ -114,29 +105,11 @@ struct Segmentation_evaluation
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
+// The options of `np`, checked (Bad_input from `who`).
 template <typename NamedParameters>
-Segmentation_options segmentation_options(const NamedParameters& np, const std::string& who)
+Segment_objects_options checked_segmentation_options(const NamedParameters& np, const std::string& who)
 {
-  namespace SAI = CGAL::Shape_analysis::internal;
-  namespace snp = CGAL::Shape_analysis::internal_np;
-  Segmentation_options o;
-  const Segmentation_method m = SAI::parameter_value<Segmentation_method>(
-    np, snp::segmentation_method_tag, Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS);
-  o.kind = m == Segmentation_method::ALL_WITHIN_RADIUS      ? Segmentation_kind::ALL
-           : m == Segmentation_method::CONNECTED_COMPONENTS ? Segmentation_kind::COMPONENTS
-           : m == Segmentation_method::MIN_CUT              ? Segmentation_kind::MIN_CUT
-                                                             : Segmentation_kind::MIN_CUT_AUTO;
-  o.radius = SAI::parameter_value<double>(np, snp::background_radius_tag, o.radius);
-  o.foreground_height = SAI::parameter_value<double>(np, snp::foreground_height_tag, o.foreground_height);
-  o.neighbors = SAI::parameter_value<std::size_t>(np, snp::number_of_neighbors_tag, o.neighbors);
-  o.cell = SAI::parameter_value<double>(np, snp::graph_cell_size_tag, o.cell);
-  o.sigma = SAI::parameter_value<double>(np, snp::edge_sigma_tag, o.cell > 0 ? 4 * o.cell : 0.2);
-  o.background_weight = SAI::parameter_value<double>(np, snp::background_weight_tag, o.background_weight);
-  o.maximum_nodes = SAI::parameter_value<std::size_t>(np, snp::maximum_graph_size_tag, o.maximum_nodes);
-  o.minimum_foreground = SAI::parameter_value<std::size_t>(np, snp::minimum_foreground_size_tag, o.minimum_foreground);
-  o.maximum_cut = SAI::parameter_value<double>(np, snp::maximum_cut_cost_tag, o.maximum_cut);
-  o.spacing = SAI::parameter_value<double>(np, snp::component_spacing_tag, o.spacing);
-  o.threads = SAI::parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
+  const Segment_objects_options o = segment_objects_options(np);
   check_segmentation_options(o, who);
   return o;
 }
@@ -172,12 +145,13 @@ inline Segmentation_result segment_objects(const std::vector<P3>& p, const std::
     throw Bad_input("segment_objects: the point cloud is empty");
   const Point_columns columns(p);
   columns.check(locations);
-  const bool graph = o.kind == Segmentation_kind::MIN_CUT || o.kind == Segmentation_kind::MIN_CUT_AUTO;
+  const bool graph = o.segmentation_method == Segmentation_method::MIN_CUT ||
+                     o.segmentation_method == Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS;
   const Segmentation_index index(columns, locations, segmentation_reach(o), o, graph);
   Segmentation_result r;
   r.preparation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<Segmentation_output> out(locations.size());
-  CGAL::Shape_analysis::internal::Parallel_workspaces<Segmentation_workspace> parallel(o.threads);
+  CGAL::Shape_analysis::internal::Parallel_workspaces<Segmentation_workspace> parallel(o.number_of_threads);
   parallel.for_each(0, locations.size(), [&](std::size_t k, Segmentation_workspace& w) {
     out[k] = segment_one(index, locations[k], o, w);
   });
@@ -204,7 +178,7 @@ described below (`foreground_height`: the thesis' 1.2 m). By `segmentation_metho
 - `Segmentation_method::CONNECTED_COMPONENTS`: among those, the points connected to the hard
   foreground (touching voxels of side `component_spacing`);
 - `Segmentation_method::MIN_CUT`: a minimum s-t cut of a k-nearest-neighbour graph. Its nodes
-  are the cells of side `graph_cell_size` (0.2 m) holding points, weighted by their point counts
+  are the cells of side `graph_cell_size` holding points, weighted by their point counts
   (with `graph_cell_size(0)`, the points themselves); each node is joined to its
   `number_of_neighbors` nearest nodes (with cells: among the nodes up to three cells away) by an
   edge of weight \f$ e^{-(d/\sigma)^2} \min(n_a, n_b) \f$, \f$ d \f$ the distance of their
@@ -218,10 +192,10 @@ described below (`foreground_height`: the thesis' 1.2 m). By `segmentation_metho
   part of the source side connected to the hard foreground. When the graph has more than
   `maximum_graph_size` nodes, it is contracted first (nodes joined by their heaviest edge are
   merged, round after round, until about that many remain), which bounds the time per object.
-- `Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS` (the default): the same cut with
+- `Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS`: the same cut with
   \f$ R \f$ = 1, 2, 3, 4, 5 m in turn, keeping the first whose foreground has more than
-  `minimum_foreground_size` (35) points and a cut cost (see `Object_segmentation::cut_cost`)
-  under `maximum_cut_cost` (0.4). When none qualifies, the smallest radius whose foreground is
+  `minimum_foreground_size` points and a cut cost (see `Object_segmentation::cut_cost`)
+  under `maximum_cut_cost`. When none qualifies, the smallest radius whose foreground is
   big enough is kept (a larger one without a clean cut only takes more of what the object
   touches), else 5 m.
 
@@ -263,34 +237,34 @@ number of threads) from one graph built for all of them.
   \cgalParamNBegin{segmentation_method}
     \cgalParamDescription{how the objects are segmented}
     \cgalParamType{`Segmentation_method`}
-    \cgalParamDefault{`Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS`}
+    \cgalParamDefault{`Segment_objects_options::segmentation_method`}
   \cgalParamNEnd
   \cgalParamNBegin{background_radius}
     \cgalParamDescription{the background radius of `MIN_CUT`, the radius of `ALL_WITHIN_RADIUS` and `CONNECTED_COMPONENTS`, in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`2`}
+    \cgalParamDefault{`Segment_objects_options::background_radius`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
   \cgalParamNBegin{foreground_height}
     \cgalParamDescription{the height of the hard foreground above the location, in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`1.2`}
+    \cgalParamDefault{`Segment_objects_options::foreground_height`}
   \cgalParamNEnd
   \cgalParamNBegin{graph_cell_size}
     \cgalParamDescription{the side of the cells that are the nodes of the graph, in metres; 0 makes every point a node}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.2`}
+    \cgalParamDefault{`Segment_objects_options::graph_cell_size`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_neighbors}
     \cgalParamDescription{the number of nearest nodes each node is joined to}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`8`}
+    \cgalParamDefault{`Segment_objects_options::number_of_neighbors`}
     \cgalParamExtra{between 1 and 64}
   \cgalParamNEnd
   \cgalParamNBegin{edge_sigma}
     \cgalParamDescription{the length scale \f$ \sigma \f$ of the edge weights, in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{4 `graph_cell_size` (0.8 m), or 0.2 m when it is 0}
+    \cgalParamDefault{`Segment_objects_options::edge_sigma`: none, that is 4 `graph_cell_size`, or 0.2 m when it is 0}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
   \cgalParamNBegin{background_weight}
@@ -298,32 +272,35 @@ number of threads) from one graph built for all of them.
       rewarded by \f$ \beta \f$ for being foreground, a point at the background radius plus 1 m is
       penalised by \f$ 10 \beta \f$}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.1`}
+    \cgalParamDefault{`Segment_objects_options::background_weight`}
   \cgalParamNEnd
   \cgalParamNBegin{maximum_graph_size}
     \cgalParamDescription{larger graphs are contracted to about this many nodes (0: never)}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`1000`}
+    \cgalParamDefault{`Segment_objects_options::maximum_graph_size`}
   \cgalParamNEnd
   \cgalParamNBegin{minimum_foreground_size}
     \cgalParamDescription{the automatic radius wants more foreground points than this}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`35`}
+    \cgalParamDefault{`Segment_objects_options::minimum_foreground_size`}
   \cgalParamNEnd
   \cgalParamNBegin{maximum_cut_cost}
     \cgalParamDescription{the automatic radius wants a cut cost under this}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.4`}
+    \cgalParamDefault{`Segment_objects_options::maximum_cut_cost`}
   \cgalParamNEnd
   \cgalParamNBegin{component_spacing}
     \cgalParamDescription{the side of the voxels of `CONNECTED_COMPONENTS`, in metres}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.3`}
+    \cgalParamDefault{`Segment_objects_options::component_spacing`}
+    \cgalParamExtra{must be positive; a parameter of its own, as in `locate_objects()`, finer by
+      default than the `component_spacing` of `remove_background()`
+      (`Remove_background_options::component_spacing`)}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
     \cgalParamDescription{the largest number of threads (0: TBB's choice); results do not depend on it}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`0`}
+    \cgalParamDefault{`Segment_objects_options::number_of_threads`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
@@ -337,7 +314,7 @@ template <typename PointRange, typename LocationRange, typename NamedParameters 
 Segmentation_result segment_objects(const PointRange& points, const LocationRange& locations,
                                     const NamedParameters& np = parameters::default_values())
 {
-  const internal::Segmentation_options o = internal::segmentation_options(np, "segment_objects");
+  const Segment_objects_options o = internal::checked_segmentation_options(np, "segment_objects");
   return internal::segment_objects(internal::point_arrays(points, np), internal::location_positions(locations), o);
 }
 
@@ -420,7 +397,7 @@ public:
   template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
   Interactive_segmenter(const PointRange& points, const std::array<double, 3>& location,
                         const NamedParameters& np = parameters::default_values())
-    : m_impl(internal::point_arrays(points, np), internal::segmentation_options(np, "Interactive_segmenter"),
+    : m_impl(internal::point_arrays(points, np), internal::checked_segmentation_options(np, "Interactive_segmenter"),
              internal::P3{{location[0], location[1], location[2]}})
   {}
 

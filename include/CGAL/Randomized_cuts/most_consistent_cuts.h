@@ -12,6 +12,7 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -60,6 +61,46 @@ struct Cut
 /*!
 \ingroup PkgRandomizedCutsRef
 
+The options of `most_consistent_cuts()`: those of the partition function it samples
+(`Partition_function_options`) and those of the list of cuts; each member is the named parameter
+of the same name, initialized to its default.
+*/
+struct Most_consistent_cuts_options : Partition_function_options
+{
+  /// the largest number of cuts returned (the largest `std::size_t`: all distinct cuts)
+  std::size_t number_of_cuts = (std::numeric_limits<std::size_t>::max)();
+  /// `MIN_CUT` sampling: two cuts whose smaller sides differ by at most this fraction of the
+  /// smaller side's area are one cut (in \f$[0, 1]\f$)
+  double duplicate_tolerance = 0.1;
+};
+
+/*!
+\ingroup PkgRandomizedCutsRef
+
+The options that `most_consistent_cuts()` reads from the named parameters `np`: the value of each
+named parameter given, the default of `Most_consistent_cuts_options` for the others. The values
+are not checked here; `most_consistent_cuts()` checks them. Named parameters that are not options
+(property maps, traits) are ignored.
+
+\tparam NamedParameters a sequence of named parameters
+\param np the named parameters, as given to the function whose options these are
+\returns the options, each from its named parameter or its default
+*/
+template <typename NamedParameters = parameters::Default_named_parameters>
+Most_consistent_cuts_options most_consistent_cuts_options(const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::Shape_analysis::internal::parameter_value;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  Most_consistent_cuts_options o;
+  internal::read_partition_function_options(np, o);
+  o.number_of_cuts = parameter_value(np, snp::number_of_cuts_tag, o.number_of_cuts);
+  o.duplicate_tolerance = parameter_value(np, snp::duplicate_tolerance_tag, o.duplicate_tolerance);
+  return o;
+}
+
+/*!
+\ingroup PkgRandomizedCutsRef
+
 Samples segmentations of a triangle mesh as `partition_function()` does and returns their distinct
 cuts, the most consistent first (\cgalCite{Golovinskiy2010}, section 3.4).
 
@@ -80,13 +121,13 @@ away), count as one cut, represented by its most consistent sample.
   \cgalParamNBegin{number_of_cuts}
     \cgalParamDescription{the largest number of cuts returned}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{all distinct cuts}
+    \cgalParamDefault{`Most_consistent_cuts_options::number_of_cuts` (all distinct cuts)}
   \cgalParamNEnd
   \cgalParamNBegin{duplicate_tolerance}
     \cgalParamDescription{`MIN_CUT` sampling: two cuts whose smaller sides differ by at most this
       fraction of the smaller side's area are one cut}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.1`}
+    \cgalParamDefault{`Most_consistent_cuts_options::duplicate_tolerance`}
     \cgalParamExtra{must be in \f$[0, 1]\f$}
   \cgalParamNEnd
   \cgalParamNBegin{edge_value_map}
@@ -108,16 +149,15 @@ most_consistent_cuts(const TriangleMesh& tm, const NamedParameters& np = paramet
 {
   using CGAL::parameters::get_parameter;
   namespace snp = CGAL::Shape_analysis::internal_np;
-  namespace SAI = CGAL::Shape_analysis::internal;
   const std::string who = "most_consistent_cuts";
-  internal::Mesh_sampling<TriangleMesh, NamedParameters> sampling(tm, np, who);
+  const Most_consistent_cuts_options o = most_consistent_cuts_options(np);
+  internal::Mesh_sampling<TriangleMesh, NamedParameters> sampling(tm, np, internal::sampling_options(o, np), who);
   if(sampling.options.part_sizes.size() != 1)
     throw Bad_input(who + ": one part size only");
-  const double tolerance = SAI::parameter_value<double>(np, snp::duplicate_tolerance_tag, 0.1);
+  const double tolerance = o.duplicate_tolerance;
   if(!(tolerance >= 0 && tolerance <= 1))
     throw Bad_input(who + ": duplicate_tolerance must be in [0, 1]");
-  const std::size_t max_cuts = SAI::parameter_value<std::size_t>(
-    np, snp::number_of_cuts_tag, (std::numeric_limits<std::size_t>::max)());
+  const std::size_t max_cuts = o.number_of_cuts;
   sampling.options.keep_samples = true;
   const internal::Sampling_result r = sampling.run();
   const auto& g = sampling.graph();
@@ -129,7 +169,7 @@ most_consistent_cuts(const TriangleMesh& tm, const NamedParameters& np = paramet
   }
 
   const std::vector<internal::Graph_cut> cuts = internal::distinct_cuts(
-    g, r.samples, r.values[0], 0, sampling.options.method == MIN_CUT, tolerance);
+    g, r.samples, r.values[0], 0, sampling.options.sampling_method == MIN_CUT, tolerance);
   std::vector<Cut<TriangleMesh>> result;
   const auto& mg = sampling.mesh_graph;
   for(const internal::Graph_cut& c : cuts) {

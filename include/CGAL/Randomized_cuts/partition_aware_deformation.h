@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,64 @@ inline double clamped_cotangent(const CGAL::Shape_analysis::internal::Vector_3d&
 
 } // namespace internal
 /// \endcond
+
+/*!
+\ingroup PkgRandomizedCutsRef
+
+The options of `partition_aware_deformation()`: each member is the named parameter of the same
+name, initialized to its default (`Partition_aware_cotangent_weight` takes its default arguments
+from here too).
+*/
+struct Partition_aware_deformation_options
+{
+  /// the largest number of as-rigid-as-possible iterations (at least 1)
+  std::size_t number_of_iterations = 100;
+  /// stop when no vertex moved by more than this fraction of the bounding-box diagonal in an
+  /// iteration, from the second one on; 0 runs every iteration (at least 0)
+  double convergence_tolerance = 1e-4;
+  /// the stiffness factor \f$f\f$ of an edge on a part boundary, in \f$(0, 1]\f$ (1: plain
+  /// cotangent weights everywhere)
+  double flexible_weight = 0.01;
+  /// the exponent \f$\gamma\f$ of the stiffness factor \f$f + (1 - f)(1 - \bar v)^\gamma\f$
+  /// (positive)
+  double stiffness_exponent = 2;
+  /// the partition-function value \f$\sigma\f$ from which an edge counts as fully on a part
+  /// boundary, in \f$(0, 1]\f$; none by default: half the largest value of the partition function
+  /// (1 if every value is 0)
+  std::optional<double> value_scale;
+  /// the number of rings \f$k\f$ over which the values are spread: a whole number, at most
+  /// `Partition_aware_cotangent_weight::maximum_spread_rings` (a `double`, so that a fraction is
+  /// refused rather than rounded)
+  double spread_rings = 2;
+};
+
+/*!
+\ingroup PkgRandomizedCutsRef
+
+The options that `partition_aware_deformation()` reads from the named parameters `np`: the value
+of each named parameter given, the default of `Partition_aware_deformation_options` for the
+others. The values are not checked here; `partition_aware_deformation()` checks them. Named
+parameters that are not options (property maps) are ignored.
+
+\tparam NamedParameters a sequence of named parameters
+\param np the named parameters, as given to the function whose options these are
+\returns the options, each from its named parameter or its default
+*/
+template <typename NamedParameters = CGAL::Shape_analysis::parameters::Default_named_parameters>
+Partition_aware_deformation_options
+partition_aware_deformation_options(const NamedParameters& np = CGAL::Shape_analysis::parameters::default_values())
+{
+  using CGAL::Shape_analysis::internal::parameter_value;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  Partition_aware_deformation_options o;
+  o.number_of_iterations = parameter_value(np, CGAL::internal_np::number_of_iterations, o.number_of_iterations);
+  o.convergence_tolerance = parameter_value(np, snp::convergence_tolerance_tag, o.convergence_tolerance);
+  o.flexible_weight = parameter_value(np, snp::flexible_weight_tag, o.flexible_weight);
+  o.stiffness_exponent = parameter_value(np, snp::stiffness_exponent_tag, o.stiffness_exponent);
+  o.value_scale = parameter_value(np, snp::value_scale_tag, o.value_scale);
+  o.spread_rings = parameter_value(np, snp::spread_rings_tag, o.spread_rings);
+  return o;
+}
 
 /*!
 \ingroup PkgRandomizedCutsRef
@@ -146,10 +205,12 @@ public:
   /// \param spread_rings the number of rings \f$k\f$ the values are spread over
   /// \pre `0 < flexible_weight <= 1`, `stiffness_exponent > 0`, `value_scale > 0`,
   ///      `spread_rings <= maximum_spread_rings`
-  explicit Partition_aware_cotangent_weight(EdgeValueMap values, double flexible_weight = 0.01,
-                                            double stiffness_exponent = 2.0,
-                                            double value_scale = 1.0,
-                                            std::size_t spread_rings = 2)
+  explicit Partition_aware_cotangent_weight(
+    EdgeValueMap values,
+    double flexible_weight = Partition_aware_deformation_options().flexible_weight,
+    double stiffness_exponent = Partition_aware_deformation_options().stiffness_exponent,
+    double value_scale = 1.0,
+    std::size_t spread_rings = std::size_t(Partition_aware_deformation_options().spread_rings))
     : m_values(values), m_has_values(true), m_flexible_weight(flexible_weight),
       m_exponent(stiffness_exponent), m_scale(value_scale),
       m_rings((std::min)(spread_rings, maximum_spread_rings))
@@ -338,42 +399,42 @@ boundaries.
   \cgalParamNBegin{number_of_iterations}
     \cgalParamDescription{the largest number of as-rigid-as-possible iterations}
     \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`100`}
+    \cgalParamDefault{`Partition_aware_deformation_options::number_of_iterations`}
     \cgalParamExtra{must be at least 1}
   \cgalParamNEnd
   \cgalParamNBegin{convergence_tolerance}
     \cgalParamDescription{stop when no vertex moved by more than this fraction of the
       bounding-box diagonal in an iteration (from the second one on); 0 runs every iteration}
     \cgalParamType{`double`}
-    \cgalParamDefault{`1e-4`}
+    \cgalParamDefault{`Partition_aware_deformation_options::convergence_tolerance`}
   \cgalParamNEnd
   \cgalParamNBegin{flexible_weight}
     \cgalParamDescription{the stiffness factor \f$f\f$ of an edge on a part boundary (1: plain
       cotangent weights everywhere)}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.01`}
+    \cgalParamDefault{`Partition_aware_deformation_options::flexible_weight`}
     \cgalParamExtra{must be in \f$(0, 1]\f$}
   \cgalParamNEnd
   \cgalParamNBegin{stiffness_exponent}
     \cgalParamDescription{the exponent \f$\gamma\f$ of the stiffness factor
       \f$f + (1 - f)(1 - \bar v)^\gamma\f$}
     \cgalParamType{`double`}
-    \cgalParamDefault{`2`}
+    \cgalParamDefault{`Partition_aware_deformation_options::stiffness_exponent`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
   \cgalParamNBegin{value_scale}
     \cgalParamDescription{the partition-function value \f$\sigma\f$ from which an edge counts as
       fully on a part boundary (the spread values are divided by it)}
     \cgalParamType{`double`}
-    \cgalParamDefault{half the largest value of `partition_function_values` (1 if every value is
-      0): a boundary that the cuts follow at least half as often as the most often cut one is
-      fully flexible}
+    \cgalParamDefault{`Partition_aware_deformation_options::value_scale`: none, that is half the
+      largest value of `partition_function_values` (1 if every value is 0): a boundary that the
+      cuts follow at least half as often as the most often cut one is fully flexible}
     \cgalParamExtra{must be in \f$(0, 1]\f$}
   \cgalParamNEnd
   \cgalParamNBegin{spread_rings}
     \cgalParamDescription{the number of rings \f$k\f$ over which the values are spread}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`2`}
+    \cgalParamDefault{`Partition_aware_deformation_options::spread_rings`}
     \cgalParamExtra{must be at most 4}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_point_map}
@@ -412,8 +473,6 @@ partition_aware_deformation(TriangleMesh& tm, EdgeValueMap partition_function_va
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using CGAL::Shape_analysis::Bad_input;
-  using CGAL::Shape_analysis::internal::parameter_value;
-  namespace SNP = CGAL::Shape_analysis::internal_np;
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
   typedef Partition_aware_cotangent_weight<TriangleMesh, EdgeValueMap> Weight;
@@ -424,37 +483,28 @@ partition_aware_deformation(TriangleMesh& tm, EdgeValueMap partition_function_va
   Vertex_point_map vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                           get_property_map(CGAL::vertex_point, tm));
   typedef typename boost::property_traits<Vertex_point_map>::value_type Point;
-  const double iterations_value =
-    parameter_value<double>(np, CGAL::internal_np::number_of_iterations, 100.0);
-  const double tolerance = parameter_value<double>(np, SNP::convergence_tolerance_tag, 1e-4);
-  const double flexible_weight = parameter_value<double>(np, SNP::flexible_weight_tag, 0.01);
-  const double exponent = parameter_value<double>(np, SNP::stiffness_exponent_tag, 2.0);
-  const double rings = parameter_value<double>(np, SNP::spread_rings_tag, 2.0);
-  double scale = parameter_value<double>(np, SNP::value_scale_tag, -1.0);
-  const bool default_scale =
-    CGAL::parameters::is_default_parameter<NamedParameters, SNP::value_scale_t>::value;
-  if(!(iterations_value >= 1) || !(iterations_value < 1e9))
+  const Partition_aware_deformation_options o = partition_aware_deformation_options(np);
+  const double rings = o.spread_rings;
+  if(!(o.number_of_iterations >= 1) || !(double(o.number_of_iterations) < 1e9))
     throw Bad_input(who + ": number_of_iterations must be at least 1");
-  if(!(tolerance >= 0) || !std::isfinite(tolerance))
+  if(!(o.convergence_tolerance >= 0) || !std::isfinite(o.convergence_tolerance))
     throw Bad_input(who + ": convergence_tolerance must be a finite number >= 0");
-  if(!(flexible_weight > 0 && flexible_weight <= 1))
+  if(!(o.flexible_weight > 0 && o.flexible_weight <= 1))
     throw Bad_input(who + ": flexible_weight must be in (0, 1]");
-  if(!(exponent > 0) || !std::isfinite(exponent))
+  if(!(o.stiffness_exponent > 0) || !std::isfinite(o.stiffness_exponent))
     throw Bad_input(who + ": stiffness_exponent must be a finite positive number");
-  if(!default_scale && !(scale > 0 && scale <= 1))
+  if(o.value_scale && !(*o.value_scale > 0 && *o.value_scale <= 1))
     throw Bad_input(who + ": value_scale must be in (0, 1]");
   if(!(rings >= 0 && rings <= double(Weight::maximum_spread_rings)) || rings != std::floor(rings))
     throw Bad_input(who + ": spread_rings must be at most " +
                     std::to_string(Weight::maximum_spread_rings));
-  const std::size_t iterations = static_cast<std::size_t>(iterations_value);
 
   // The mesh and the constraints.
   auto to_vector = [](const Point& p) { return internal::deformation_point(p); };
   CGAL::Shape_analysis::internal::check_triangle_mesh(tm, vpm, to_vector, who);
   auto vim = CGAL::get_initialized_vertex_index_map(tm);
   const double largest_value = internal::check_deformation_input(tm, vim, partition_function_values, who);
-  if(default_scale)
-    scale = largest_value > 0 ? 0.5 * largest_value : 1.0;
+  const double scale = o.value_scale ? *o.value_scale : (largest_value > 0 ? 0.5 * largest_value : 1.0);
   std::vector<vertex_descriptor> controls(std::begin(control_vertices), std::end(control_vertices));
   const std::vector<Point> target_points = internal::deformation_targets<Point>(
     targets, [](const auto& p) { return internal::deformation_point(p); }, controls.size(), who);
@@ -471,8 +521,8 @@ partition_aware_deformation(TriangleMesh& tm, EdgeValueMap partition_function_va
                                          CGAL::Default, Vertex_point_map>
     Deformation;
   Deformation deformation(tm, vim, CGAL::get_initialized_halfedge_index_map(tm), vpm,
-                          Weight(partition_function_values, flexible_weight, exponent, scale,
-                                 static_cast<std::size_t>(rings)));
+                          Weight(partition_function_values, o.flexible_weight, o.stiffness_exponent,
+                                 scale, static_cast<std::size_t>(rings)));
   deformation.insert_roi_vertices(roi.begin(), roi.end());
   deformation.insert_control_vertices(controls.begin(), controls.end());
   deformation.insert_control_vertices(fixed.begin(), fixed.end());
@@ -481,7 +531,8 @@ partition_aware_deformation(TriangleMesh& tm, EdgeValueMap partition_function_va
   for(std::size_t k = 0; k < controls.size(); ++k)
     deformation.set_target_position(controls[k], target_points[k]);
 
-  return internal::run_deformation(deformation, vpm, to_vector, roi, iterations, tolerance, diagonal);
+  return internal::run_deformation(deformation, vpm, to_vector, roi, o.number_of_iterations,
+                                   o.convergence_tolerance, diagonal);
 }
 
 } // namespace Randomized_cuts

@@ -6,6 +6,7 @@
 
 /// \file partition_function.h
 
+#include <CGAL/Randomized_cuts/Partition_function_options.h>
 #include <CGAL/Randomized_cuts/Sampling_method.h>
 #include <CGAL/Randomized_cuts/internal/Mesh_sampling.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
@@ -19,8 +20,6 @@
 namespace CGAL {
 namespace Randomized_cuts {
 
-/// The named parameters of this package (this project's, and CGAL's usable in the same chain).
-namespace parameters = CGAL::Shape_analysis::parameters;
 using CGAL::Shape_analysis::Bad_input;
 
 /*!
@@ -64,6 +63,22 @@ inline Partition_function_result make_result(const Sampling_result& r)
   result.converged = r.converged;
   result.largest_change = r.largest_change;
   return result;
+}
+
+// partition_function() with the maps of `mesh_np` and the options `o`.
+template <typename TriangleMesh, typename EdgeValueMap, typename MeshNamedParameters>
+Partition_function_result partition_function_impl(const TriangleMesh& tm, EdgeValueMap edge_value_map,
+                                                  const MeshNamedParameters& mesh_np,
+                                                  const Sampling_options& o)
+{
+  typedef typename boost::property_traits<EdgeValueMap>::value_type Value;
+  const Mesh_sampling<TriangleMesh, MeshNamedParameters> sampling(tm, mesh_np, o, "partition_function");
+  if(sampling.options.part_sizes.size() != 1)
+    throw Bad_input("partition_function: one part size only (use multiscale_partition_function)");
+  const Sampling_result r = sampling.run();
+  std::vector<Value> by_rank;
+  write_edge_values(sampling, r.values[0], edge_value_map, by_rank);
+  return make_result(r);
 }
 
 } // namespace internal
@@ -116,73 +131,73 @@ threads.
   \cgalParamNBegin{sampling_method}
     \cgalParamDescription{how segmentations are sampled}
     \cgalParamType{`CGAL::Randomized_cuts::Sampling_method`}
-    \cgalParamDefault{`CGAL::Randomized_cuts::MIN_CUT`}
+    \cgalParamDefault{`Partition_function_options::sampling_method`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_samples}
     \cgalParamDescription{the number of segmentations to sample}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`400`}
+    \cgalParamDefault{`Partition_function_options::number_of_samples`}
   \cgalParamNEnd
   \cgalParamNBegin{convergence_tolerance}
     \cgalParamDescription{stop early, after a batch of 64 samples, when no edge value changed by
       more than this over the batch; 0 draws every sample}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0`}
+    \cgalParamDefault{`Partition_function_options::convergence_tolerance`}
   \cgalParamNEnd
   \cgalParamNBegin{random_seed}
     \cgalParamDescription{the seed of the random numbers}
     \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`0`}
+    \cgalParamDefault{`Partition_function_options::random_seed`}
   \cgalParamNEnd
   \cgalParamNBegin{part_size}
     \cgalParamDescription{`MIN_CUT`: the part size \f$s\f$ of the penalty near the source and sink
       faces, as a fraction of the relative distance}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.05`}
+    \cgalParamDefault{`Partition_function_options::part_size`}
     \cgalParamExtra{must be in \f$(0, 1/6]\f$}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_clusters}
     \cgalParamDescription{`K_MEANS`: the number of seeds; `HIERARCHICAL`: the largest number of
       segments of the segmentations a run contributes}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`10`}
+    \cgalParamDefault{`Partition_function_options::number_of_clusters`}
     \cgalParamExtra{must be at least 2}
   \cgalParamNEnd
   \cgalParamNBegin{randomness}
     \cgalParamDescription{`HIERARCHICAL`: the randomness \f$r\f$ of the merge choice (smaller is
       closer to the deterministic clustering)}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.02`}
+    \cgalParamDefault{`Partition_function_options::randomness`}
   \cgalParamNEnd
   \cgalParamNBegin{score_weighting}
     \cgalParamDescription{whether each sampled segmentation counts with weight
       \f$1/J\f$, \f$J = \sum_S \mathrm{cut}(S)/\mathrm{area}(S)\f$ under the plain cut costs, so that
       segmentations along deep creases count more; otherwise every sample counts the same}
     \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
+    \cgalParamDefault{`Partition_function_options::score_weighting`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
     \cgalParamDescription{the largest number of threads used (with TBB); 0 for all cores. The
       result does not depend on it}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`0`}
+    \cgalParamDefault{`Partition_function_options::number_of_threads`}
   \cgalParamNEnd
   \cgalParamNBegin{concavity_exponent}
     \cgalParamDescription{the exponent \f$\alpha\f$ of the concavity weight}
     \cgalParamType{`double`}
-    \cgalParamDefault{`10`}
+    \cgalParamDefault{`Partition_function_options::concavity_exponent`}
   \cgalParamNEnd
   \cgalParamNBegin{component_link_distance}
     \cgalParamDescription{faces of different connected components closer than this fraction of
       the bounding-box diagonal are linked}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.1`}
+    \cgalParamDefault{`Partition_function_options::component_link_distance`}
   \cgalParamNEnd
   \cgalParamNBegin{component_link_factor}
     \cgalParamDescription{the cut cost of a link between components, relative to the mean cut cost
       of the mesh edges}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.01`}
+    \cgalParamDefault{`Partition_function_options::component_link_factor`}
   \cgalParamNEnd
   \cgalParamNBegin{progress_callback}
     \cgalParamDescription{called after every batch of samples with the fraction drawn}
@@ -221,15 +236,44 @@ template <typename TriangleMesh, typename EdgeValueMap,
 Partition_function_result partition_function(const TriangleMesh& tm, EdgeValueMap edge_value_map,
                                              const NamedParameters& np = parameters::default_values())
 {
-  typedef typename boost::property_traits<EdgeValueMap>::value_type Value;
-  const internal::Mesh_sampling<TriangleMesh, NamedParameters> sampling(tm, np,
-                                                                        "partition_function");
-  if(sampling.options.part_sizes.size() != 1)
-    throw Bad_input("partition_function: one part size only (use multiscale_partition_function)");
-  const internal::Sampling_result r = sampling.run();
-  std::vector<Value> by_rank;
-  internal::write_edge_values(sampling, r.values[0], edge_value_map, by_rank);
-  return internal::make_result(r);
+  return internal::partition_function_impl(tm, edge_value_map, np, internal::sampling_options(np));
+}
+
+/*!
+\ingroup PkgRandomizedCutsRef
+
+The options of `multiscale_partition_function()`: those of `partition_function()` (its `part_size`
+is not used) and the list of part sizes; each member is the named parameter of the same name,
+initialized to its default.
+*/
+struct Multiscale_partition_function_options : Partition_function_options
+{
+  /// the part sizes \f$s\f$, each in \f$(0, 1/6]\f$ (at least one)
+  std::vector<double> part_sizes = {0.02, 0.05, 0.1};
+};
+
+/*!
+\ingroup PkgRandomizedCutsRef
+
+The options that `multiscale_partition_function()` reads from the named parameters `np`: the value
+of each named parameter given, the default of `Multiscale_partition_function_options` for the
+others. The values are not checked here; `multiscale_partition_function()` checks them. Named
+parameters that are not options (property maps, traits) are ignored.
+
+\tparam NamedParameters a sequence of named parameters
+\param np the named parameters, as given to the function whose options these are
+\returns the options, each from its named parameter or its default
+*/
+template <typename NamedParameters = parameters::Default_named_parameters>
+Multiscale_partition_function_options
+multiscale_partition_function_options(const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::Shape_analysis::internal::parameter_value;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  Multiscale_partition_function_options o;
+  internal::read_partition_function_options(np, o);
+  o.part_sizes = parameter_value(np, snp::part_sizes_tag, o.part_sizes);
+  return o;
 }
 
 /*!
@@ -260,7 +304,7 @@ rounding decides between two equally cheap cuts of a sample.
   \cgalParamNBegin{part_sizes}
     \cgalParamDescription{the part sizes \f$s\f$}
     \cgalParamType{`std::vector<double>`}
-    \cgalParamDefault{`{0.02, 0.05, 0.1}`}
+    \cgalParamDefault{`Multiscale_partition_function_options::part_sizes`}
     \cgalParamExtra{each must be in \f$(0, 1/6]\f$}
   \cgalParamNEnd
 \cgalNamedParamsEnd
@@ -276,15 +320,15 @@ Partition_function_result
 multiscale_partition_function(const TriangleMesh& tm, EdgeValuesMap edge_values_map,
                               const NamedParameters& np = parameters::default_values())
 {
-  using CGAL::parameters::get_parameter;
   typedef internal::Mesh_sampling<TriangleMesh, NamedParameters> Sampling;
-  Sampling sampling(tm, np, "multiscale_partition_function");
-  if(CGAL::parameters::is_default_parameter<NamedParameters,
-                                            CGAL::Shape_analysis::internal_np::part_sizes_t>::value)
-    sampling.options.part_sizes = {0.02, 0.05, 0.1};
+  const Multiscale_partition_function_options o = multiscale_partition_function_options(np);
+  // The options are checked as partition_function() checks them first (with `part_size` if no
+  // `part_sizes` are given), then with the part sizes.
+  Sampling sampling(tm, np, internal::sampling_options(o, np), "multiscale_partition_function");
+  sampling.options.part_sizes = o.part_sizes;
   internal::check_sampling_options(sampling.options, sampling.graph().number_of_nodes(),
                                    "multiscale_partition_function");
-  if(sampling.options.method != MIN_CUT)
+  if(sampling.options.sampling_method != MIN_CUT)
     throw Bad_input("multiscale_partition_function: the sampling_method must be MIN_CUT");
   const internal::Sampling_result r = sampling.run();
   const auto& g = sampling.graph();

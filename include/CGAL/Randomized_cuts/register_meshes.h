@@ -77,6 +77,60 @@ struct Registration_result
   std::size_t number_of_points = 0;
 };
 
+/*!
+\ingroup PkgRandomizedCutsRef
+
+The options of `register_meshes()`: those of the partition function of each mesh
+(`Partition_function_options`, whose `random_seed`, `number_of_threads` and `progress_callback`
+also serve the registration) and those of the registration; each member is the named parameter of
+the same name, initialized to its default. The `shape_analysis register` command takes its
+defaults from here.
+*/
+struct Register_meshes_options : Partition_function_options
+{
+  /// The defaults of `Partition_function_options`, except `number_of_samples`: the registration
+  /// only needs to know roughly where the part boundaries are, and samples fewer segmentations.
+  Register_meshes_options() { number_of_samples = 100; }
+
+  /// the number of points sampled on each mesh (at least 10)
+  std::size_t number_of_points = 2000;
+  /// the largest number of ICP iterations of a restart between all sample points (0: the initial
+  /// alignments of the principal frames only)
+  std::size_t number_of_iterations = 50;
+  /// the fraction of the closest-point pairs of each direction kept by ICP and by the RMS
+  /// distance (in \f$(0, 1]\f$; 1 keeps every pair)
+  double overlap = 0.9;
+  /// whether the sample points are concentrated on part boundaries with the partition function;
+  /// otherwise they are uniform by area (and no partition function is computed)
+  bool partition_weighting = true;
+};
+
+/*!
+\ingroup PkgRandomizedCutsRef
+
+The options that `register_meshes()` reads from the named parameters `np` (its `np_source`): the
+value of each named parameter given, the default of `Register_meshes_options` for the others. The
+values are not checked here; `register_meshes()` checks them. Named parameters that are not
+options (property maps, traits) are ignored.
+
+\tparam NamedParameters a sequence of named parameters
+\param np the named parameters, as given to the function whose options these are
+\returns the options, each from its named parameter or its default
+*/
+template <typename NamedParameters = parameters::Default_named_parameters>
+Register_meshes_options register_meshes_options(const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::Shape_analysis::internal::parameter_value;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  Register_meshes_options o;
+  internal::read_partition_function_options(np, o);
+  o.number_of_points = parameter_value(np, snp::number_of_points_tag, o.number_of_points);
+  o.number_of_iterations = parameter_value(np, CGAL::internal_np::number_of_iterations, o.number_of_iterations);
+  o.overlap = parameter_value(np, CGAL::internal_np::overlap, o.overlap);
+  o.partition_weighting = parameter_value(np, snp::partition_weighting_tag, o.partition_weighting);
+  return o;
+}
+
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
@@ -148,11 +202,11 @@ inline std::vector<SAI::Vector_3d> sample_triangles(const Surface_triangles& s, 
   return points;
 }
 
-// Checks a mesh for registration and returns its triangles (with partition emphasis when
-// `partition_np` is not null).
-template <typename TriangleMesh, typename MeshNP, typename PartitionNP>
+// Checks a mesh for registration and returns its triangles (with partition emphasis, the partition
+// function sampled with `partition`, when it is not null).
+template <typename TriangleMesh, typename MeshNP>
 Surface_triangles registration_triangles(const TriangleMesh& tm, const MeshNP& mesh_np,
-                                         const PartitionNP* partition_np, const std::string& who)
+                                         const Sampling_options* partition, const std::string& who)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -165,16 +219,16 @@ Surface_triangles registration_triangles(const TriangleMesh& tm, const MeshNP& m
     choose_parameter<Geom_traits>(get_parameter(mesh_np, CGAL::internal_np::geom_traits))};
   SAI::check_triangle_mesh(tm, vpm, to_vector, who);
   std::map<edge_descriptor, double> values;
-  if(partition_np != nullptr) {
+  if(partition != nullptr) {
     try {
-      partition_function(tm, boost::associative_property_map<std::map<edge_descriptor, double>>(values),
-                         *partition_np);
+      partition_function_impl(tm, boost::associative_property_map<std::map<edge_descriptor, double>>(values),
+                              mesh_np, *partition);
     } catch(const Bad_input& e) {
       throw Bad_input(who + ": " + e.what());
     }
   }
   const Surface_triangles s =
-    surface_triangles(tm, vpm, to_vector, partition_np != nullptr ? &values : nullptr);
+    surface_triangles(tm, vpm, to_vector, partition != nullptr ? &values : nullptr);
   if(!(s.total_area > 0) || !std::isfinite(s.total_area))
     throw Bad_input(who + ": the mesh has no area");
   return s;
@@ -248,7 +302,8 @@ sampled preferably along part boundaries (\cgalCite{Golovinskiy2010}, registrati
 partition function).
 
 1. The partition function of each mesh is computed (see `partition_function()`; its named
-   parameters are passed on, with `number_of_samples` defaulting to 100 here).
+   parameters are passed on, with fewer `number_of_samples` by default: see
+   `Register_meshes_options`).
 2. `number_of_points` points are sampled on each surface, each face with a probability
    proportional to its area times \f$(0.5 + v_f/\bar v)\f$, where \f$v_f\f$ is the mean partition
    function value of the face's three edges and \f$\bar v\f$ the area-weighted mean of \f$v_f\f$ over
@@ -295,20 +350,20 @@ the result is the same for any number of threads.
   \cgalParamNBegin{number_of_points}
     \cgalParamDescription{the number of points sampled on each mesh}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`2000`}
+    \cgalParamDefault{`Register_meshes_options::number_of_points`}
     \cgalParamExtra{must be at least 10}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations}
     \cgalParamDescription{the largest number of ICP iterations of a restart between all sample
       points (step 4; 0: the initial alignments of the principal frames only)}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`50`}
+    \cgalParamDefault{`Register_meshes_options::number_of_iterations`}
   \cgalParamNEnd
   \cgalParamNBegin{overlap}
     \cgalParamDescription{the fraction of the closest-point pairs of each direction kept by ICP and
       by the RMS distance (the worst pairs are treated as outliers); 1 keeps every pair}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.9`}
+    \cgalParamDefault{`Register_meshes_options::overlap`}
     \cgalParamExtra{must be in \f$(0, 1]\f$}
   \cgalParamNEnd
   \cgalParamNBegin{partition_weighting}
@@ -316,23 +371,24 @@ the result is the same for any number of threads.
       partition function; otherwise they are uniform by area (and no partition function is
       computed)}
     \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
+    \cgalParamDefault{`Register_meshes_options::partition_weighting`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_samples}
-    \cgalParamDescription{the number of segmentations sampled for each partition function}
+    \cgalParamDescription{the number of segmentations sampled for each partition function (by
+      default fewer than `partition_function()` samples: see `Register_meshes_options()`)}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`100`}
+    \cgalParamDefault{`Register_meshes_options::number_of_samples`}
   \cgalParamNEnd
   \cgalParamNBegin{random_seed}
     \cgalParamDescription{the seed of the random numbers (partition functions and point samples)}
     \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`0`}
+    \cgalParamDefault{`Partition_function_options::random_seed`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
     \cgalParamDescription{the largest number of threads used (with TBB); 0 for all cores. The
       result does not depend on it}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`0`}
+    \cgalParamDefault{`Partition_function_options::number_of_threads`}
   \cgalParamNEnd
   \cgalParamNBegin{progress_callback}
     \cgalParamDescription{called with the fraction of the work done, in \f$[0, 1]\f$: during the
@@ -383,35 +439,20 @@ register_meshes(const TriangleMesh& source, const TriangleMesh& target,
                 const NamedParameters1& np_source = parameters::default_values(),
                 const NamedParameters2& np_target = parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  namespace snp = CGAL::Shape_analysis::internal_np;
   namespace SAI = CGAL::Shape_analysis::internal;
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters1>::type Kernel;
   const std::string who = "register_meshes";
 
-  const std::size_t n_points =
-    SAI::parameter_value<std::size_t>(np_source, snp::number_of_points_tag, std::size_t(2000));
-  const std::size_t iterations = SAI::parameter_value<std::size_t>(
-    np_source, CGAL::internal_np::number_of_iterations, std::size_t(50));
-  const double overlap =
-    SAI::parameter_value<double>(np_source, CGAL::internal_np::overlap, 0.9);
-  const bool weighting = SAI::parameter_value<bool>(np_source, snp::partition_weighting_tag, true);
-  const std::uint64_t seed = SAI::parameter_value<std::uint64_t>(
-    np_source, CGAL::internal_np::random_seed, std::uint64_t(0));
-  const std::size_t threads =
-    SAI::parameter_value<std::size_t>(np_source, snp::number_of_threads_tag, std::size_t(0));
-  const std::size_t pf_samples = SAI::parameter_value<std::size_t>(
-    np_source, CGAL::internal_np::number_of_samples, std::size_t(100));
-  const std::function<void(double)> progress = SAI::parameter_value<std::function<void(double)>>(
-    np_source, snp::progress_callback_tag, std::function<void(double)>());
+  const Register_meshes_options o = register_meshes_options(np_source);
+  const std::size_t n_points = o.number_of_points;
   if(n_points < 10)
     throw Bad_input(who + ": number_of_points must be at least 10");
   if(n_points > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
     throw Bad_input(who + ": number_of_points is too large");
-  if(!(overlap > 0 && overlap <= 1))
+  if(!(o.overlap > 0 && o.overlap <= 1))
     throw Bad_input(who + ": overlap must be in (0, 1]");
 
+  const std::function<void(double)>& progress = o.progress_callback;
   const auto report = [&](double offset, double span) {
     return progress ? std::function<void(double)>([progress, offset, span](double f) {
                         progress(offset + span * f);
@@ -419,38 +460,30 @@ register_meshes(const TriangleMesh& source, const TriangleMesh& target,
                     : std::function<void(double)>();
   };
 
-  // The target's maps replace the source's in the target's partition-function parameters.
-  auto target_vpm = choose_parameter(get_parameter(np_target, CGAL::internal_np::vertex_point),
-                                     get_const_property_map(CGAL::vertex_point, target));
-  auto target_fim = CGAL::get_initialized_face_index_map(target, np_target);
-  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters2>::type Target_traits;
-  const Target_traits target_traits =
-    choose_parameter<Target_traits>(get_parameter(np_target, CGAL::internal_np::geom_traits));
-  const auto source_np = parameters::extend(np_source)
-                           .number_of_samples(pf_samples)
-                           .progress_callback(report(0.0, 0.4));
-  const auto target_np = parameters::extend(np_source)
-                           .vertex_point_map(target_vpm)
-                           .face_index_map(target_fim)
-                           .geom_traits(target_traits)
-                           .number_of_samples(pf_samples)
-                           .progress_callback(report(0.4, 0.4));
+  // The partition function of each mesh: the options of `np_source`, the maps of its own
+  // parameters, the progress in its share of the work.
+  internal::Sampling_options source_partition = internal::sampling_options(o, np_source);
+  internal::Sampling_options target_partition = source_partition;
+  source_partition.progress_callback = report(0.0, 0.4);
+  target_partition.progress_callback = report(0.4, 0.4);
+  const bool weighting = o.partition_weighting;
 
   const internal::Surface_triangles source_triangles = internal::registration_triangles(
-    source, np_source, weighting ? &source_np : nullptr, who + " (source mesh)");
+    source, np_source, weighting ? &source_partition : nullptr, who + " (source mesh)");
   const internal::Surface_triangles target_triangles = internal::registration_triangles(
-    target, np_target, weighting ? &target_np : nullptr, who + " (target mesh)");
+    target, np_target, weighting ? &target_partition : nullptr, who + " (target mesh)");
 
   const std::vector<SAI::Vector_3d> source_points =
-    internal::registration_points(source_triangles, n_points, seed, 0);
+    internal::registration_points(source_triangles, n_points, o.random_seed, 0);
   const std::vector<SAI::Vector_3d> target_points =
-    internal::registration_points(target_triangles, n_points, seed, 1);
+    internal::registration_points(target_triangles, n_points, o.random_seed, 1);
 
   const double alignment_start = weighting ? 0.8 : 0.0;
   if(progress)
     progress(alignment_start);
   const SAI::Restart_alignment_result a = internal::align_registration_points(
-    source_triangles, source_points, target_triangles, target_points, iterations, overlap, threads);
+    source_triangles, source_points, target_triangles, target_points, o.number_of_iterations,
+    o.overlap, o.number_of_threads);
   if(progress)
     progress(1.0);
 

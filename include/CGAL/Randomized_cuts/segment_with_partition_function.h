@@ -6,6 +6,7 @@
 
 /// \file segment_with_partition_function.h
 
+#include <CGAL/Randomized_cuts/Segment_with_partition_function_options.h>
 #include <CGAL/Randomized_cuts/partition_function.h>
 #include <CGAL/Randomized_cuts/internal/Partition_segmentation.h>
 
@@ -44,14 +45,14 @@ threads.
   \cgalParamNBegin{number_of_segments}
     \cgalParamDescription{the number of segments to produce}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`8`}
+    \cgalParamDefault{`Segment_with_partition_function_options::number_of_segments`}
     \cgalParamExtra{must be between 1 and the number of faces}
   \cgalParamNEnd
   \cgalParamNBegin{boundary_refinement}
     \cgalParamDescription{whether single faces are moved between segments at the end while the
       normalized cut decreases}
     \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
+    \cgalParamDefault{`Segment_with_partition_function_options::boundary_refinement`}
   \cgalParamNEnd
   \cgalParamNBegin{edge_value_map}
     \cgalParamDescription{receives the partition function of the whole mesh}
@@ -74,31 +75,26 @@ std::size_t segment_with_partition_function(const TriangleMesh& tm, FaceSegmentM
 {
   using CGAL::parameters::get_parameter;
   namespace snp = CGAL::Shape_analysis::internal_np;
-  namespace SAI = CGAL::Shape_analysis::internal;
   const std::string who = "segment_with_partition_function";
-  const std::size_t k =
-    SAI::parameter_value<std::size_t>(np, snp::number_of_segments_tag, std::size_t(8));
+  const Segment_with_partition_function_options o = segment_with_partition_function_options(np);
+  const std::size_t k = o.number_of_segments;
   if(k == 0)
     throw Bad_input(who + ": number_of_segments must be at least 1");
-  internal::Mesh_sampling<TriangleMesh, NamedParameters> sampling(tm, np, who);
+  internal::Mesh_sampling<TriangleMesh, NamedParameters> sampling(tm, np, internal::sampling_options(o, np), who);
   const auto& g = sampling.graph();
   if(k > g.number_of_nodes())
     throw Bad_input(who + ": number_of_segments (" + std::to_string(k) +
                     ") exceeds the number of faces (" + std::to_string(g.number_of_nodes()) + ")");
-  if(sampling.options.method != MIN_CUT)
+  if(sampling.options.sampling_method != MIN_CUT)
     throw Bad_input(who + ": the sampling_method must be MIN_CUT (its samples are cuts)");
   if(sampling.options.part_sizes.size() != 1)
     throw Bad_input(who + ": one part size only");
 
-  internal::Partition_segmentation_options o;
-  o.number_of_segments = k;
-  o.sampling = sampling.options;
-  o.boundary_refinement = SAI::parameter_value<bool>(np, snp::boundary_refinement_tag, true);
   std::vector<double> values;
   auto value_map = get_parameter(np, snp::edge_value_map_tag);
   constexpr bool want_values =
     !std::is_same<decltype(value_map), CGAL::internal_np::Param_not_found>::value;
-  internal::Partition_segmentation segmentation(g, o);
+  internal::Partition_segmentation segmentation(g, o, sampling.options);
   const std::vector<std::size_t> labels = segmentation.run(want_values ? &values : nullptr);
   if constexpr(want_values) {
     std::vector<double> by_rank;

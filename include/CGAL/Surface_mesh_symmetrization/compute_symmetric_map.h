@@ -48,6 +48,41 @@ The symmetric map of a mesh for some symmetries: per symmetry, per vertex (in th
 */
 typedef std::vector<std::vector<Mirror_point>> Symmetric_map;
 
+/*!
+\ingroup PkgSurfaceMeshSymmetrizationRef
+
+The options of `compute_symmetric_map()` (and of `transfer_vertex_attribute()` when it computes the
+map): each member is the named parameter of the same name, initialized to its default.
+*/
+struct Compute_symmetric_map_options
+{
+  /// the largest number of threads used (with TBB), 0 for all cores; the result does not depend
+  /// on it
+  std::size_t number_of_threads = 0;
+};
+
+/*!
+\ingroup PkgSurfaceMeshSymmetrizationRef
+
+The options that `compute_symmetric_map()` reads from the named parameters `np`: the value of each
+named parameter given, the default of `Compute_symmetric_map_options` for the others. Named
+parameters that are not options (property maps, traits) are ignored.
+
+\tparam NamedParameters a sequence of named parameters
+\param np the named parameters, as given to the function whose options these are
+\returns the options, each from its named parameter or its default
+*/
+template <typename NamedParameters = parameters::Default_named_parameters>
+Compute_symmetric_map_options
+compute_symmetric_map_options(const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::Shape_analysis::internal::parameter_value;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  Compute_symmetric_map_options o;
+  o.number_of_threads = parameter_value(np, snp::number_of_threads_tag, o.number_of_threads);
+  return o;
+}
+
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
@@ -59,6 +94,24 @@ inline Mirror_point public_mirror(const Mirror& m)
   p.distance = m.distance;
   p.found = m.found;
   return p;
+}
+
+// compute_symmetric_map() on a mesh already read.
+template <typename Kernel>
+std::vector<Mirror_point> symmetric_map(const Surface& surface, const Symmetry<Kernel>& symmetry,
+                                        const Compute_symmetric_map_options& o, const std::string& who)
+{
+  const double area = surface.total_area();
+  if(!(area > 0) || !std::isfinite(area))
+    throw Bad_input(who + ": the mesh has no area");
+  const Affine_3d t = affine_of(symmetry, who);
+  const Surface_index index(surface);
+  const auto mirrors = mirror_points(surface, index, {t.inverse()}, true, o.number_of_threads);
+  std::vector<Mirror_point> result;
+  result.reserve(mirrors.front().size());
+  for(const Mirror& m : mirrors.front())
+    result.push_back(public_mirror(m));
+  return result;
 }
 
 } // namespace internal
@@ -79,8 +132,25 @@ mirror points are exact; on a nearly symmetric one they are the natural correspo
 
 \param tm the mesh (as for `symmetrize()`)
 \param symmetry the symmetry
-\param np an optional sequence of named parameters: `vertex_point_map`, `geom_traits` and
-       `number_of_threads`, as for `symmetrize()`
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the largest number of threads used (with TBB); 0 for all cores}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`Compute_symmetric_map_options::number_of_threads`}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap`}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
 
 \returns one mirror point per vertex, in the order of `vertices(tm)`
 
@@ -93,22 +163,9 @@ template <typename TriangleMesh, typename Kernel,
 std::vector<Mirror_point> compute_symmetric_map(const TriangleMesh& tm, const Symmetry<Kernel>& symmetry,
                                                 const NamedParameters& np = parameters::default_values())
 {
-  namespace SAI = CGAL::Shape_analysis::internal;
-  namespace snp = CGAL::Shape_analysis::internal_np;
   const std::string who = "compute_symmetric_map";
-  const std::size_t threads = SAI::parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
   const internal::Mesh_arrays<TriangleMesh> mesh = internal::read_mesh_np(tm, np, who);
-  const double area = mesh.surface.total_area();
-  if(!(area > 0) || !std::isfinite(area))
-    throw Bad_input(who + ": the mesh has no area");
-  const internal::Affine_3d t = internal::affine_of(symmetry, who);
-  const internal::Surface_index index(mesh.surface);
-  const auto mirrors = internal::mirror_points(mesh.surface, index, {t.inverse()}, true, threads);
-  std::vector<Mirror_point> result;
-  result.reserve(mirrors.front().size());
-  for(const internal::Mirror& m : mirrors.front())
-    result.push_back(internal::public_mirror(m));
-  return result;
+  return internal::symmetric_map(mesh.surface, symmetry, compute_symmetric_map_options(np), who);
 }
 
 } // namespace Surface_mesh_symmetrization

@@ -6,6 +6,7 @@
 
 /// \file detect_reflective_symmetries.h
 
+#include <CGAL/Surface_mesh_symmetrization/Detect_reflective_symmetries_options.h>
 #include <CGAL/Surface_mesh_symmetrization/Symmetry.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Plane_detection.h>
 
@@ -83,37 +84,37 @@ inside); it may be open or made of several components.
     \cgalParamDescription{the number of points sampled on the surface (votes come from every pair
       of them; the refinement and the score use them too)}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`1000`}
+    \cgalParamDefault{`Detect_reflective_symmetries_options::number_of_samples`}
     \cgalParamExtra{must be at least 20}
   \cgalParamNEnd
   \cgalParamNBegin{maximum_number_of_symmetries}
     \cgalParamDescription{the largest number of symmetries reported}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`5`}
+    \cgalParamDefault{`Detect_reflective_symmetries_options::maximum_number_of_symmetries`}
   \cgalParamNEnd
   \cgalParamNBegin{minimum_support}
     \cgalParamDescription{the smallest support fraction of a reported symmetry}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.1`}
+    \cgalParamDefault{`Detect_reflective_symmetries_options::minimum_support`}
     \cgalParamExtra{must be in \f$[0, 1]\f$}
   \cgalParamNEnd
   \cgalParamNBegin{support_tolerance}
     \cgalParamDescription{the tolerance \f$\sigma\f$ of the support weights, as a fraction of the
       bounding-box diagonal}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.01`}
+    \cgalParamDefault{`Detect_reflective_symmetries_options::support_tolerance`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
   \cgalParamNBegin{random_seed}
     \cgalParamDescription{the seed of the random sample points}
     \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`0`}
+    \cgalParamDefault{`Detect_reflective_symmetries_options::random_seed`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
     \cgalParamDescription{the largest number of threads used (with TBB); 0 for all cores. The
       result does not depend on it}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`0`}
+    \cgalParamDefault{`Detect_reflective_symmetries_options::number_of_threads`}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_point_map}
     \cgalParamDescription{a property map associating points to the vertices of `tm`}
@@ -141,20 +142,10 @@ template <typename TriangleMesh, typename OutputIterator,
 OutputIterator detect_reflective_symmetries(const TriangleMesh& tm, OutputIterator out,
                                             const NamedParameters& np = parameters::default_values())
 {
-  namespace SAI = CGAL::Shape_analysis::internal;
-  namespace snp = CGAL::Shape_analysis::internal_np;
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Kernel;
   const std::string who = "detect_reflective_symmetries";
 
-  internal::Detection_options o;
-  o.number_of_samples =
-    SAI::parameter_value<std::size_t>(np, CGAL::internal_np::number_of_samples, std::size_t(1000));
-  o.maximum_number_of_symmetries =
-    SAI::parameter_value<std::size_t>(np, snp::maximum_number_of_symmetries_tag, std::size_t(5));
-  o.minimum_support = SAI::parameter_value<double>(np, snp::minimum_support_tag, 0.1);
-  o.support_tolerance = SAI::parameter_value<double>(np, snp::support_tolerance_tag, 0.01);
-  o.seed = SAI::parameter_value<std::uint64_t>(np, CGAL::internal_np::random_seed, std::uint64_t(0));
-  o.number_of_threads = SAI::parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
+  const Detect_reflective_symmetries_options o = detect_reflective_symmetries_options(np);
   if(o.number_of_samples < 20)
     throw Bad_input(who + ": number_of_samples must be at least 20");
   if(o.number_of_samples > 1000000)

@@ -6,6 +6,7 @@
 
 /// \file symmetrize.h
 
+#include <CGAL/Surface_mesh_symmetrization/Symmetrize_options.h>
 #include <CGAL/Surface_mesh_symmetrization/Symmetry.h>
 #include <CGAL/Surface_mesh_symmetrization/compute_symmetric_map.h>
 #include <CGAL/Surface_mesh_symmetrization/detect_reflective_symmetries.h>
@@ -88,6 +89,47 @@ inline std::vector<double> vertex_weights(const Surface& s, const std::vector<do
   for(std::size_t v = 0; v < sum.size(); ++v)
     sum[v] = area[v] > 0 ? sum[v] / area[v] : 0.0;
   return sum;
+}
+
+// The options' ranges (not the symmetries').
+inline void check_options(const Symmetrize_options& o, const std::string& who)
+{
+  if(o.number_of_iterations < 1)
+    throw Bad_input(who + ": number_of_iterations must be at least 1");
+  if(!(o.shape_weight > 0) || !std::isfinite(o.shape_weight))
+    throw Bad_input(who + ": shape_weight must be a positive number");
+  if(!(o.displacement_weight > 0) || !std::isfinite(o.displacement_weight))
+    throw Bad_input(who + ": displacement_weight must be a positive number");
+  if(!(o.symmetry_tolerance > 0) || !std::isfinite(o.symmetry_tolerance))
+    throw Bad_input(who + ": symmetry_tolerance must be a positive number");
+  if(!(o.target_symmetry_error >= 0) || !std::isfinite(o.target_symmetry_error))
+    throw Bad_input(who + ": target_symmetry_error must be a number, at least 0");
+  if(!(o.final_symmetry_weight > 0) || !std::isfinite(o.final_symmetry_weight))
+    throw Bad_input(who + ": final_symmetry_weight must be a positive number");
+}
+
+// The symmetries as the solver takes them: transforms, and vertex weights from the supports when
+// `weighting`.
+template <typename Kernel, typename SymmetryRange>
+std::vector<Solver_symmetry> solver_symmetries(const Surface& surface, const SymmetryRange& symmetries,
+                                               bool weighting, const std::string& who)
+{
+  std::vector<Solver_symmetry> result;
+  for(const Symmetry<Kernel>& s : symmetries) {
+    Solver_symmetry ss;
+    ss.transform = affine_of(s, who);
+    if(weighting && !s.support.empty()) {
+      if(s.support.size() != surface.number_of_faces())
+        throw Bad_input(who + ": a symmetry's support has " + std::to_string(s.support.size()) +
+                        " values for " + std::to_string(surface.number_of_faces()) + " faces");
+      for(double w : s.support)
+        if(!(w >= 0 && w <= 1))
+          throw Bad_input(who + ": a symmetry's support has a value outside [0, 1]");
+      ss.vertex_weight = vertex_weights(surface, s.support);
+    }
+    result.push_back(std::move(ss));
+  }
+  return result;
 }
 
 } // namespace internal
@@ -180,45 +222,45 @@ depend on the number of threads.
     \cgalParamDescription{the number of steps of \f$\alpha\f$ on the coarsest level, the first
       constrained step included}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`5`}
+    \cgalParamDefault{`Symmetrize_options::number_of_iterations`}
     \cgalParamExtra{must be at least 1}
   \cgalParamNEnd
   \cgalParamNBegin{shape_weight}
     \cgalParamDescription{the factor \f$s\f$ of the shape term}
     \cgalParamType{`double`}
-    \cgalParamDefault{`1`}
+    \cgalParamDefault{`Symmetrize_options::shape_weight`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
   \cgalParamNBegin{displacement_weight}
     \cgalParamDescription{the weight \f$\beta\f$ of the displacement term}
     \cgalParamType{`double`}
-    \cgalParamDefault{`0.01`}
+    \cgalParamDefault{`Symmetrize_options::displacement_weight`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_levels}
     \cgalParamDescription{the number of levels of the multiresolution hierarchy, the input
       included (0: as many as needed to reach `coarsest_level_size`; 1: no coarser level)}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`0`}
+    \cgalParamDefault{`Symmetrize_options::number_of_levels`}
   \cgalParamNEnd
   \cgalParamNBegin{coarsest_level_size}
     \cgalParamDescription{the smallest number of vertices of a coarser level (a level is made when it
       has at least half as many)}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`20000`}
+    \cgalParamDefault{`Symmetrize_options::coarsest_level_size`}
   \cgalParamNEnd
   \cgalParamNBegin{symmetry_tolerance}
     \cgalParamDescription{the RMS symmetry error, relative to the bounding-box diagonal, at which
       the constrained steps stop (at most 8)}
     \cgalParamType{`double`}
-    \cgalParamDefault{`1e-6`}
+    \cgalParamDefault{`Symmetrize_options::symmetry_tolerance`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
   \cgalParamNBegin{target_symmetry_error}
     \cgalParamDescription{the RMS symmetry error, relative to the bounding-box diagonal, at which
       the isometric refinement stops (0: no refinement)}
     \cgalParamType{`double`}
-    \cgalParamDefault{`1e-4`}
+    \cgalParamDefault{`Symmetrize_options::target_symmetry_error`}
     \cgalParamExtra{must not be negative}
   \cgalParamNEnd
   \cgalParamNBegin{final_symmetry_weight}
@@ -228,7 +270,7 @@ depend on the number of threads.
       sides do not have matching vertices (the cow without the isometric refinement: 100 gives an
       error of 3.9e-4 and a distortion of 0.013; 10^4 gives 4.3e-5 and 0.026)}
     \cgalParamType{`double`}
-    \cgalParamDefault{`100`}
+    \cgalParamDefault{`Symmetrize_options::final_symmetry_weight`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
   \cgalParamNBegin{support_weighting}
@@ -237,17 +279,18 @@ depend on the number of threads.
       with an empty support weighs 1 everywhere). Otherwise every symmetry applies to the whole
       mesh}
     \cgalParamType{`bool`}
-    \cgalParamDefault{`true` when several symmetries are given, `false` for one}
+    \cgalParamDefault{`Symmetrize_options::support_weighting`: when empty, `true` if several symmetries
+      are given, `false` for one}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
     \cgalParamDescription{the largest number of threads used (with TBB); 0 for all cores}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`0`}
+    \cgalParamDefault{`Symmetrize_options::number_of_threads`}
   \cgalParamNEnd
   \cgalParamNBegin{progress_callback}
     \cgalParamDescription{called with the fraction of the work done, in \f$[0, 1]\f$}
     \cgalParamType{a callable convertible to `std::function<void(double)>`}
-    \cgalParamDefault{none}
+    \cgalParamDefault{`Symmetrize_options::progress_callback`}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_point_map}
     \cgalParamDescription{a property map associating points to the vertices of `tm`; read for
@@ -280,42 +323,13 @@ Symmetrization_result<typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters
 symmetrize(TriangleMesh& tm, const SymmetryRange& symmetries,
            const NamedParameters& np = parameters::default_values())
 {
-  namespace SAI = CGAL::Shape_analysis::internal;
-  namespace snp = CGAL::Shape_analysis::internal_np;
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Kernel;
   typedef typename Kernel::FT FT;
   const std::string who = "symmetrize";
 
-  internal::Symmetrization_options o;
-  o.number_of_iterations =
-    SAI::parameter_value<std::size_t>(np, CGAL::internal_np::number_of_iterations, std::size_t(5));
-  o.shape_weight = SAI::parameter_value<double>(np, snp::shape_weight_tag, 1.0);
-  o.displacement_weight = SAI::parameter_value<double>(np, snp::displacement_weight_tag, 0.01);
-  o.number_of_levels = SAI::parameter_value<std::size_t>(np, snp::number_of_levels_tag, std::size_t(0));
-  o.coarsest_level_size =
-    SAI::parameter_value<std::size_t>(np, snp::coarsest_level_size_tag, std::size_t(20000));
-  o.symmetry_tolerance = SAI::parameter_value<double>(np, snp::symmetry_tolerance_tag, 1e-6);
-  o.constrained_ratio = SAI::parameter_value<double>(np, snp::final_symmetry_weight_tag, 100.0);
-  o.target_error = SAI::parameter_value<double>(np, snp::target_symmetry_error_tag, 1e-4);
-  if(o.target_error == 0)
-    o.refinement_steps = 0;
-  o.number_of_threads = SAI::parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
-  o.progress = SAI::parameter_value<std::function<void(double)>>(np, snp::progress_callback_tag,
-                                                                 std::function<void(double)>());
+  const Symmetrize_options o = symmetrize_options(np);
   const std::size_t n_symmetries = std::size_t(std::distance(std::begin(symmetries), std::end(symmetries)));
-  const bool weighting = SAI::parameter_value<bool>(np, snp::support_weighting_tag, n_symmetries > 1);
-  if(o.number_of_iterations < 1)
-    throw Bad_input(who + ": number_of_iterations must be at least 1");
-  if(!(o.shape_weight > 0) || !std::isfinite(o.shape_weight))
-    throw Bad_input(who + ": shape_weight must be a positive number");
-  if(!(o.displacement_weight > 0) || !std::isfinite(o.displacement_weight))
-    throw Bad_input(who + ": displacement_weight must be a positive number");
-  if(!(o.symmetry_tolerance > 0) || !std::isfinite(o.symmetry_tolerance))
-    throw Bad_input(who + ": symmetry_tolerance must be a positive number");
-  if(!(o.target_error >= 0) || !std::isfinite(o.target_error))
-    throw Bad_input(who + ": target_symmetry_error must be a number, at least 0");
-  if(!(o.constrained_ratio > 0) || !std::isfinite(o.constrained_ratio))
-    throw Bad_input(who + ": final_symmetry_weight must be a positive number");
+  internal::check_options(o, who);
   if(n_symmetries == 0)
     throw Bad_input(who + ": no symmetry given");
 
@@ -323,23 +337,9 @@ symmetrize(TriangleMesh& tm, const SymmetryRange& symmetries,
   const double area = mesh.surface.total_area();
   if(!(area > 0) || !std::isfinite(area))
     throw Bad_input(who + ": the mesh has no area");
-  std::vector<internal::Solver_symmetry> solver_symmetries;
-  for(const Symmetry<Kernel>& s : symmetries) {
-    internal::Solver_symmetry ss;
-    ss.transform = internal::affine_of(s, who);
-    if(weighting && !s.support.empty()) {
-      if(s.support.size() != mesh.surface.number_of_faces())
-        throw Bad_input(who + ": a symmetry's support has " + std::to_string(s.support.size()) +
-                        " values for " + std::to_string(mesh.surface.number_of_faces()) + " faces");
-      for(double w : s.support)
-        if(!(w >= 0 && w <= 1))
-          throw Bad_input(who + ": a symmetry's support has a value outside [0, 1]");
-      ss.vertex_weight = internal::vertex_weights(mesh.surface, s.support);
-    }
-    solver_symmetries.push_back(std::move(ss));
-  }
-
-  internal::Symmetrizer solver(mesh.surface, solver_symmetries, o);
+  const bool weighting = o.support_weighting.value_or(n_symmetries > 1);
+  internal::Symmetrizer solver(mesh.surface,
+                               internal::solver_symmetries<Kernel>(mesh.surface, symmetries, weighting, who), o);
   const internal::Symmetrization_output out = solver.run();
 
   Symmetrization_result<Kernel> r;
@@ -375,8 +375,8 @@ symmetrize(TriangleMesh& tm, const SymmetryRange& symmetries,
     const internal::Vector_3d& p = out.points[i];
     put(vpm, mesh.vertices[i], Point(p.x, p.y, p.z));
   }
-  if(o.progress)
-    o.progress(1.0);
+  if(o.progress_callback)
+    o.progress_callback(1.0);
   return r;
 }
 

@@ -36,6 +36,46 @@ enum class Transfer_mode
   BLEND
 };
 
+/*!
+\ingroup PkgSurfaceMeshSymmetrizationRef
+
+The options of `transfer_vertex_attribute()`: each member is the named parameter of the same name,
+initialized to its default. When the symmetric map is computed, the options of
+`compute_symmetric_map()` apply too.
+*/
+struct Transfer_vertex_attribute_options
+{
+  /// whether one side is copied onto the other or both are blended
+  Transfer_mode transfer_mode = Transfer_mode::COPY;
+  /// with `Transfer_mode::COPY`, the side whose values are copied: 1 for the side the plane's
+  /// normal points to, -1 for the other
+  int source_side = 1;
+};
+
+/*!
+\ingroup PkgSurfaceMeshSymmetrizationRef
+
+The options that `transfer_vertex_attribute()` reads from the named parameters `np`: the value of
+each named parameter given, the default of `Transfer_vertex_attribute_options` for the others. The
+values are not checked here; `transfer_vertex_attribute()` checks them. Named parameters that are
+not options (property maps, the symmetric map) are ignored.
+
+\tparam NamedParameters a sequence of named parameters
+\param np the named parameters, as given to the function whose options these are
+\returns the options, each from its named parameter or its default
+*/
+template <typename NamedParameters = parameters::Default_named_parameters>
+Transfer_vertex_attribute_options
+transfer_vertex_attribute_options(const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::Shape_analysis::internal::parameter_value;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  Transfer_vertex_attribute_options o;
+  o.transfer_mode = parameter_value(np, snp::transfer_mode_tag, o.transfer_mode);
+  o.source_side = parameter_value(np, snp::source_side_tag, o.source_side);
+  return o;
+}
+
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
@@ -128,13 +168,13 @@ Vertices without a mirror point keep their values. Values are read before any is
   \cgalParamNBegin{transfer_mode}
     \cgalParamDescription{copy one side onto the other, or blend both}
     \cgalParamType{`Transfer_mode`}
-    \cgalParamDefault{`Transfer_mode::COPY`}
+    \cgalParamDefault{`Transfer_vertex_attribute_options::transfer_mode`}
   \cgalParamNEnd
   \cgalParamNBegin{source_side}
     \cgalParamDescription{with `Transfer_mode::COPY`, the side whose values are copied: `1` for the
       side the plane's normal points to, `-1` for the other}
     \cgalParamType{`int`}
-    \cgalParamDefault{`1`}
+    \cgalParamDefault{`Transfer_vertex_attribute_options::source_side`}
   \cgalParamNEnd
   \cgalParamNBegin{symmetric_map}
     \cgalParamDescription{the mirror points of the vertices, for example `result.symmetric_map[0]`
@@ -142,6 +182,12 @@ Vertices without a mirror point keep their values. Values are read before any is
       mesh was deformed); computed with `compute_symmetric_map()` when absent}
     \cgalParamType{`std::vector<Mirror_point>`}
     \cgalParamDefault{computed}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the largest number of threads used (with TBB) when the symmetric map is
+      computed; 0 for all cores}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`Compute_symmetric_map_options::number_of_threads`}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_point_map}
     \cgalParamDescription{a property map associating points to the vertices of `tm`}
@@ -163,14 +209,14 @@ void transfer_vertex_attribute(const TriangleMesh& tm, const Symmetry<Kernel>& s
                                VertexValueMap values,
                                const NamedParameters& np = parameters::default_values())
 {
-  namespace SAI = CGAL::Shape_analysis::internal;
   namespace snp = CGAL::Shape_analysis::internal_np;
   using CGAL::parameters::is_default_parameter;
   typedef typename boost::property_traits<VertexValueMap>::value_type Value;
   const std::string who = "transfer_vertex_attribute";
 
-  const Transfer_mode mode = SAI::parameter_value<Transfer_mode>(np, snp::transfer_mode_tag, Transfer_mode::COPY);
-  const int side = SAI::parameter_value<int>(np, snp::source_side_tag, 1);
+  const Transfer_vertex_attribute_options o = transfer_vertex_attribute_options(np);
+  const Transfer_mode mode = o.transfer_mode;
+  const int side = o.source_side;
   if(side != 1 && side != -1)
     throw Bad_input(who + ": source_side must be 1 or -1");
   if(mode == Transfer_mode::COPY && !symmetry.is_reflection)
@@ -181,7 +227,7 @@ void transfer_vertex_attribute(const TriangleMesh& tm, const Symmetry<Kernel>& s
   if constexpr(!is_default_parameter<NamedParameters, snp::symmetric_map_t>::value)
     computed = CGAL::parameters::get_parameter(np, snp::symmetric_map_tag);
   else
-    computed = compute_symmetric_map(tm, symmetry, np);
+    computed = internal::symmetric_map(mesh.surface, symmetry, compute_symmetric_map_options(np), who);
   const std::vector<Mirror_point>* map = &computed;
   const std::size_t n = mesh.vertices.size();
   if(map->size() != n)

@@ -96,7 +96,7 @@ inline void link_samples(const Surface_sample& from, std::uint32_t mesh_from, co
                          const Surface_sample& to, const SAI::Point_tree& to_tree, std::uint32_t mesh_to,
                          const Coseg_options& o, std::vector<Correspondence>& out)
 {
-  const double max_distance = o.distance_fraction * to.diagonal;
+  const double max_distance = o.correspondence_distance * to.diagonal;
   const double weight = 1.0 / double(from.points.size());
   std::vector<std::pair<double, std::uint32_t>> near;
   for(std::size_t i = 0; i < from.points.size(); ++i) {
@@ -126,7 +126,7 @@ inline void sample_meshes(const std::vector<Coseg_mesh>& meshes, const Coseg_opt
   trees.resize(m);
   SAI::Parallel_workspaces<char> workers(o.number_of_threads);
   workers.for_each(0, m, [&](std::size_t i, char&) {
-    samples[i] = sample_surface(meshes[i], o.number_of_points, o.seed, i);
+    samples[i] = sample_surface(meshes[i], o.number_of_points, o.random_seed, i);
     std::vector<std::uint32_t> ids(samples[i].points.size());
     std::iota(ids.begin(), ids.end(), std::uint32_t(0));
     trees[i] = SAI::Point_tree(samples[i].points, ids);

@@ -63,7 +63,7 @@ inline std::vector<std::size_t> oversegment(SAI::Dual_graph& g, const Coseg_mesh
   if(m.known.empty()) {
     Segmentation_options so = o;
     so.number_of_segments = (std::min)(k, n);
-    so.progress = {};
+    so.progress_callback = {};
     // segment_dual_graph adds the links itself: give it the unlinked graph.
     return segment_dual_graph(g, so, m.prior.empty() ? nullptr : &m.prior);
   }
@@ -81,7 +81,7 @@ inline std::vector<std::size_t> oversegment(SAI::Dual_graph& g, const Coseg_mesh
   std::set<long long> distinct(m.known.begin(), m.known.end());
   distinct.erase(-1);
   const std::size_t target = (std::max)(k, distinct.size());
-  const double small_size = (std::min)(o.small_segment_fraction, 0.1 / double(target)) * g.total_size();
+  const double small_size = (std::min)(small_segment_fraction, 0.1 / double(target)) * g.total_size();
   clustering.run(
     target,
     [&](SAI::Normalized_cut_clustering::Id a, SAI::Normalized_cut_clustering::Id b) {
@@ -103,7 +103,7 @@ inline std::vector<std::vector<std::size_t>> oversegment_meshes(std::vector<Cose
   std::vector<std::vector<std::size_t>> over(m);
   SAI::Parallel_workspaces<char> workers(o.number_of_threads);
   workers.for_each(0, m, [&](std::size_t i, char&) {
-    over[i] = oversegment(meshes[i].graph, meshes[i], o.number_of_oversegments, o.stage_one);
+    over[i] = oversegment(meshes[i].graph, meshes[i], o.number_of_oversegments, o);
   });
   return over;
 }
@@ -240,8 +240,8 @@ inline Coseg_result cosegment(std::vector<Coseg_mesh>& meshes, const Coseg_optio
   const std::size_t m = meshes.size();
   Coseg_result result;
   auto report = [&](double f) {
-    if(o.progress)
-      o.progress(f);
+    if(o.progress_callback)
+      o.progress_callback(f);
   };
 
   const std::vector<std::vector<std::size_t>> over = oversegment_meshes(meshes, o);
@@ -264,11 +264,11 @@ inline Coseg_result cosegment(std::vector<Coseg_mesh>& meshes, const Coseg_optio
   const std::vector<std::size_t> offset = oversegment_offsets(over);
   const std::size_t total = offset[m];
   result.number_of_oversegments = total;
-  Joint_merging merging(total, o.alpha);
+  Joint_merging merging(total, o.adjacency_exponent);
   std::vector<double> size;
   result.number_of_correspondences = add_oversegment_graph(merging, meshes, over, offset, links, size);
 
-  merging.run(o.number_of_segments, o.refinement_interval, o.stage_one.boundary_refinement,
+  merging.run(o.number_of_segments, refinement_interval, o.boundary_refinement,
               [&](double f) { report(0.6 + 0.4 * f); });
 
   number_segments(merging, meshes, over, offset, size, result);

@@ -6,6 +6,7 @@
 
 // The input, options and result of the co-segmentation (see Cosegmentation.h).
 
+#include <CGAL/Consistent_segmentation/Consistent_segmentation_options.h>
 #include <CGAL/Consistent_segmentation/internal/Segmentation_graph.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/internal/Dual_graph.h>
@@ -36,24 +37,11 @@ struct Coseg_mesh
   double plane_offset = 0;                              // plane: n.x = offset
 };
 
-struct Coseg_options
-{
-  std::size_t number_of_segments = 8;
-  std::size_t number_of_oversegments = 20;
-  double alpha = 0.1;
-  std::size_t number_of_points = 1000;
-  double normal_threshold = 0.3;
-  double distance_fraction = 0.2;
-  // Each mesh keeps the correspondences of its `number_of_partners` best-aligned partners; in
-  // sets of more than 2 number_of_partners + 1 meshes, only the 2 number_of_partners meshes of
-  // closest shape distribution are aligned with it. 0: every pair aligned and kept.
-  std::size_t number_of_partners = 4;
-  std::size_t refinement_interval = 12;
-  std::uint64_t seed = 0;
-  std::size_t number_of_threads = 0;
-  Segmentation_options stage_one;   // concavity, links, prior factor, refinement (both stages)
-  std::function<void(double)> progress;
-};
+typedef Consistent_segmentation_options Coseg_options;
+
+// Every this many merges of the joint merging, single over-segments move to a neighbouring segment
+// when that lowers the energy (if boundary_refinement).
+constexpr std::size_t refinement_interval = 12;
 
 struct Coseg_result
 {
@@ -75,15 +63,15 @@ inline void check_coseg_options(const Coseg_options& o, const std::string& who)
     throw Bad_input(who + ": number_of_segments must be at least 1");
   if(o.number_of_oversegments == 0)
     throw Bad_input(who + ": number_of_oversegments must be at least 1");
-  if(!(o.alpha >= 0 && o.alpha <= 1))
+  if(!(o.adjacency_exponent >= 0 && o.adjacency_exponent <= 1))
     throw Bad_input(who + ": adjacency_exponent must be in [0, 1]");
   if(o.number_of_points < 10 || o.number_of_points > 10000000)
     throw Bad_input(who + ": number_of_points must be in [10, 10,000,000]");
   if(!(o.normal_threshold >= -1 && o.normal_threshold < 1))
     throw Bad_input(who + ": normal_threshold must be in [-1, 1)");
-  if(!(o.distance_fraction > 0) || !std::isfinite(o.distance_fraction))
+  if(!(o.correspondence_distance > 0) || !std::isfinite(o.correspondence_distance))
     throw Bad_input(who + ": correspondence_distance must be a finite number > 0");
-  check_options(o.stage_one, (std::numeric_limits<std::size_t>::max)(), who);
+  check_options(o, (std::numeric_limits<std::size_t>::max)(), who);
 }
 
 } // namespace internal

@@ -7,6 +7,7 @@
 // Hierarchical segmentation on a dual graph (mesh independent): prior boundaries, component links,
 // normalized-cut merging, boundary refinement, and numbering of the segments by decreasing area.
 
+#include <CGAL/Consistent_segmentation/Hierarchical_segmentation_options.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/internal/Component_links.h>
 #include <CGAL/Shape_analysis/internal/Dual_graph.h>
@@ -25,17 +26,11 @@ namespace CGAL {
 namespace Consistent_segmentation {
 namespace internal {
 
-struct Segmentation_options
-{
-  std::size_t number_of_segments = 8;
-  double concavity_exponent = 10;
-  double prior_boundary_factor = 10;
-  double component_link_distance = 0.1;
-  double component_link_factor = 0.01;
-  bool boundary_refinement = true;
-  double small_segment_fraction = 1e-4;
-  std::function<void(double)> progress; // called with the fraction of the work done
-};
+typedef Hierarchical_segmentation_options Segmentation_options;
+
+// Segments below this fraction of the total area (specks: a folded-over face, whose edges all look
+// like deep creases) are merged into their neighbours before any two larger segments are.
+constexpr double small_segment_fraction = 1e-4;
 
 inline void check_options(const Segmentation_options& o, std::size_t number_of_faces,
                           const std::string& who)
@@ -90,19 +85,19 @@ inline std::vector<std::size_t> segment_dual_graph(CGAL::Shape_analysis::interna
   const std::size_t report_every = (std::max<std::size_t>)(1, to_merge / 100);
   std::size_t merged = 0;
   std::function<void(SAI::Normalized_cut_clustering::Id, SAI::Normalized_cut_clustering::Id)> on_merge;
-  if(o.progress)
+  if(o.progress_callback)
     on_merge = [&](SAI::Normalized_cut_clustering::Id, SAI::Normalized_cut_clustering::Id) {
       if(++merged % report_every == 0)
-        o.progress(0.9 * double(merged) / double(to_merge));
+        o.progress_callback(0.9 * double(merged) / double(to_merge));
     };
-  const double small_size = (std::min)(o.small_segment_fraction, 0.1 / double(o.number_of_segments)) * g.total_size();
+  const double small_size = (std::min)(small_segment_fraction, 0.1 / double(o.number_of_segments)) * g.total_size();
   clustering.run(o.number_of_segments, {}, on_merge, 0.0, 0, small_size);
   std::vector<std::size_t> labels = clustering.labels();
   if(o.boundary_refinement)
     SAI::multilevel_refinement(g.node_size, g.edge_source, g.edge_target, g.cut_cost,
                                clustering.merges(), labels);
-  if(o.progress)
-    o.progress(1.0);
+  if(o.progress_callback)
+    o.progress_callback(1.0);
   return number_by_size(labels, g.node_size);
 }
 

@@ -4,9 +4,10 @@
 #ifndef CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_BACKGROUND_REMOVAL_H
 #define CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_BACKGROUND_REMOVAL_H
 
-// The geometry of remove_background.h: its options, the plane fit of a cell of the ground, the
+// The geometry of remove_background.h: the plane fit of a cell of the ground, the
 // boxes of connected components and the peeling of walls off the large components.
 
+#include <CGAL/Point_set_object_recognition/Remove_background_options.h>
 #include <CGAL/Point_set_object_recognition/internal/Voxel_grid.h>
 
 #include <algorithm>
@@ -21,11 +22,7 @@ namespace CGAL {
 namespace Point_set_object_recognition {
 namespace internal {
 
-struct Background_options
-{
-  double cell = 5, threshold = 0.2, isolation = 0.5, spacing = 0.5, extent = 12;
-  std::size_t neighbors = 3;
-};
+typedef Remove_background_options Background_options;
 
 // Least-squares plane z = a x + b y + c through the points `idx` (coordinates relative to
 // (cx, cy)); false when they do not determine one, or do not spread over the cell in both x and
@@ -96,7 +93,7 @@ inline void peel_walls(const std::vector<std::array<double, 3>>& p, const std::v
                        const Background_options& o, const std::array<double, 3>& lo, std::vector<char>& large)
 {
   const std::size_t n = p.size();
-  const double side = o.spacing / 2, wall_height = 2.0, grounded = 0.5;
+  const double side = o.component_spacing / 2, wall_height = 2.0, grounded = 0.5;
   std::unordered_map<std::uint64_t, std::array<double, 2>> column; // lowest, highest
   const auto key2 = [&](std::size_t i) { return voxel_key(p[i][0], p[i][1], lo[2], side, lo); };
   for(std::size_t i = 0; i < n; ++i)
@@ -116,12 +113,12 @@ inline void peel_walls(const std::vector<std::array<double, 3>>& p, const std::v
   if(!any)
     return;
   std::size_t components = 0;
-  const std::vector<std::uint32_t> component = voxel_components(p, rest, o.spacing, lo, components);
+  const std::vector<std::uint32_t> component = voxel_components(p, rest, o.component_spacing, lo, components);
   const std::vector<Component_box> box = component_boxes(p, height, rest, component, components);
   for(std::size_t i = 0; i < n; ++i)
     if(rest[i]) {
       const Component_box& b = box[component[i]];
-      if(!(b.width() > o.extent) && b.low < grounded && b.high - b.low <= wall_height)
+      if(!(b.width() > o.maximum_component_extent) && b.low < grounded && b.high - b.low <= wall_height)
         large[i] = 0;
     }
 }

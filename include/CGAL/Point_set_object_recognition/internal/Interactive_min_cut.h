@@ -37,9 +37,10 @@ class Interactive_min_cut
 public:
   // Bad_input for a method that is not a min-cut, an empty cloud, and as segment_objects().
   Interactive_min_cut(std::vector<P3>&& points, const Segmentation_options& o, const P3& location)
-    : m_points(std::move(points)), m_options(with_wall_nodes(o)), m_location(location)
+    : m_points(std::move(points)), m_options(o), m_location(location)
   {
-    if(m_options.kind != Segmentation_kind::MIN_CUT && m_options.kind != Segmentation_kind::MIN_CUT_AUTO)
+    if(m_options.segmentation_method != Segmentation_method::MIN_CUT &&
+       m_options.segmentation_method != Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS)
       throw CGAL::Shape_analysis::Bad_input("Interactive_segmenter: the segmentation method must be a min-cut");
     if(m_points.empty())
       throw CGAL::Shape_analysis::Bad_input("Interactive_segmenter: the point cloud is empty");
@@ -88,26 +89,20 @@ public:
 private:
   typedef CGAL::Shape_analysis::internal::Terminal_min_cut Cut;
 
-  // The segmenter's graph keeps the nodes of walls (without edges): a point on a wall can be
-  // constrained to the foreground.
-  static Segmentation_options with_wall_nodes(Segmentation_options o)
-  {
-    o.wall_nodes = true;
-    return o;
-  }
-
   void initialize()
   {
     const std::vector<P3> at{m_location};
     m_columns.reset(new Point_columns(m_points));
     m_columns->check(at);
-    m_index.reset(new Segmentation_index(*m_columns, at, segmentation_reach(m_options), m_options, true));
+    // The segmenter's graph keeps the nodes of walls (without edges): a point on a wall can be
+    // constrained to the foreground.
+    m_index.reset(new Segmentation_index(*m_columns, at, segmentation_reach(m_options), m_options, true, true));
     Segmentation_workspace w;
     Segmentation_output first = segment_one(*m_index, m_location, m_options, w);
     m_result.radius = first.radius;
     m_result.seed = first.seed == std::size_t(-1) ? Result::no_point : first.seed;
     // The graph of that radius, uncontracted.
-    const double largest = m_options.kind == Segmentation_kind::MIN_CUT ? m_options.radius : m_options.radii.back();
+    const double largest = largest_background_radius(m_options);
     const std::vector<std::uint32_t> seeds = object_seeds(*m_index, m_location, largest, m_options, w.candidates);
     std::vector<double> outside;
     build_object_graph(*m_index, m_location, first.radius, seeds, m_options, w, outside, true);

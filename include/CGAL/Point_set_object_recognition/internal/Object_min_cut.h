@@ -46,7 +46,7 @@ inline double foreground_reward(double d, double R, const Segmentation_options& 
 }
 inline double background_penalty(double d, double R, const Segmentation_options& o)
 {
-  return d <= R ? 0.0 : o.background_weight * o.outer_factor * (std::min)(1.0, (d - R) / o.ramp_width);
+  return d <= R ? 0.0 : o.background_weight * outer_factor * (std::min)(1.0, (d - R) / ramp_width);
 }
 
 // The hard foreground: the point nearest to the vertical segment from the location up to
@@ -92,9 +92,9 @@ inline std::vector<std::uint32_t> foreground_seeds(const std::vector<P3>& p, con
 inline std::vector<std::uint32_t> object_seeds(const Segmentation_index& index, const P3& location, double R,
                                                const Segmentation_options& o, std::vector<std::uint32_t>& candidates)
 {
-  index.points_off_walls_within(location, (std::min)(R + o.ramp_width, 2.0), candidates);
+  index.points_off_walls_within(location, (std::min)(R + ramp_width, 2.0), candidates);
   if(candidates.empty())
-    index.points_off_walls_within(location, R + o.ramp_width, candidates);
+    index.points_off_walls_within(location, R + ramp_width, candidates);
   return foreground_seeds(index.points(), candidates, location, o.foreground_height);
 }
 
@@ -114,7 +114,7 @@ inline void build_object_graph(const Segmentation_index& index, const P3& locati
                                const std::vector<std::uint32_t>& seed_points, const Segmentation_options& o,
                                Segmentation_workspace& w, std::vector<double>& outside, bool with_walls = false)
 {
-  index.nodes_within(location, R + o.ramp_width, w.nodes, with_walls);
+  index.nodes_within(location, R + ramp_width, w.nodes, with_walls);
   if(w.local_of.size() < index.number_of_nodes())
     w.local_of.assign(index.number_of_nodes(), Segmentation_index::none);
   for(std::size_t k = 0; k < w.nodes.size(); ++k)
@@ -144,7 +144,7 @@ inline void build_object_graph(const Segmentation_index& index, const P3& locati
   std::vector<std::uint32_t> seed_nodes;
   for(std::uint32_t i : seed_points)
     seed_nodes.push_back(index.node_of_point(i));
-  if(!seed_points.empty() && o.cell > 0 && seed_nodes.front() != Segmentation_index::none) {
+  if(!seed_points.empty() && o.graph_cell_size > 0 && seed_nodes.front() != Segmentation_index::none) {
     const std::uint32_t v0 = seed_nodes.front();
     std::vector<std::pair<double, std::uint32_t>> near;
     index.for_adjacent(v0, [&](std::uint32_t u, double) {
@@ -153,7 +153,7 @@ inline void build_object_graph(const Segmentation_index& index, const P3& locati
       near.emplace_back((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]), u);
     });
     std::sort(near.begin(), near.end());
-    for(std::size_t k = 0; k < near.size() && k < o.seed_neighbors; ++k)
+    for(std::size_t k = 0; k < near.size() && k < seed_neighbors; ++k)
       seed_nodes.push_back(near[k].second);
   }
   for(std::uint32_t v : seed_nodes)
@@ -221,7 +221,7 @@ inline Cut_outcome min_cut_at_radius(const Segmentation_index& index, const P3& 
   const std::size_t fine = g.penalty.size();
   // Per fine node, the weight to the hard background beyond the graph (already in its penalty).
   std::vector<double> fine_outside = outside;
-  g.contract(o.maximum_nodes);
+  g.contract(o.maximum_graph_size);
   if(g.coarse.empty()) {
     g.coarse.resize(fine);
     std::iota(g.coarse.begin(), g.coarse.end(), 0u);

@@ -29,8 +29,8 @@ namespace internal {
 // The largest horizontal distance from a location that a segmentation looks at.
 inline double segmentation_reach(const Segmentation_options& o)
 {
-  const bool automatic = o.kind == Segmentation_kind::MIN_CUT_AUTO;
-  return (automatic ? o.radii.back() : o.radius) + o.ramp_width + 1.0;
+  const bool automatic = o.segmentation_method == Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS;
+  return (automatic ? automatic_radii.back() : o.background_radius) + ramp_width + 1.0;
 }
 
 // The object at `location` as all points within the radius, or those of them connected to the
@@ -39,12 +39,12 @@ inline void segment_within_radius(const Segmentation_index& index, const P3& loc
                                   Segmentation_workspace& w, Segmentation_output& out)
 {
   const std::vector<P3>& p = index.points();
-  index.points_within(location, o.radius, w.candidates);
+  index.points_within(location, o.background_radius, w.candidates);
   const std::vector<std::uint32_t> seeds = foreground_seeds(p, w.candidates, location, o.foreground_height);
-  out.radius = o.radius;
+  out.radius = o.background_radius;
   if(!seeds.empty())
     out.seed = seeds.front();
-  if(o.kind == Segmentation_kind::ALL || w.candidates.empty()) {
+  if(o.segmentation_method == Segmentation_method::ALL_WITHIN_RADIUS || w.candidates.empty()) {
     out.points.assign(w.candidates.begin(), w.candidates.end());
     return;
   }
@@ -57,9 +57,10 @@ inline void segment_within_radius(const Segmentation_index& index, const P3& loc
       seed_k = k;
   }
   P3 lo, hi;
-  checked_bounds(q, o.spacing, "segment_objects", lo, hi);
+  checked_bounds(q, o.component_spacing, "segment_objects", lo, hi);
   std::size_t components = 0;
-  const std::vector<std::uint32_t> c = voxel_components(q, std::vector<char>(q.size(), 1), o.spacing, lo, components);
+  const std::vector<std::uint32_t> c = voxel_components(q, std::vector<char>(q.size(), 1), o.component_spacing, lo,
+                                                    components);
   for(std::size_t k = 0; k < q.size(); ++k)
     if(c[k] == c[seed_k])
       out.points.push_back(w.candidates[k]);
@@ -69,15 +70,16 @@ inline void segment_within_radius(const Segmentation_index& index, const P3& loc
 inline void segment_by_min_cut(const Segmentation_index& index, const P3& location, const Segmentation_options& o,
                                Segmentation_workspace& w, Segmentation_output& out)
 {
-  const double largest = o.kind == Segmentation_kind::MIN_CUT ? o.radius : o.radii.back();
+  const double largest = largest_background_radius(o);
   const std::vector<std::uint32_t> seeds = object_seeds(index, location, largest, o, w.candidates);
   if(seeds.empty()) {
-    out.radius = o.kind == Segmentation_kind::MIN_CUT ? o.radius : o.radii.back();
+    out.radius = largest;
     return;
   }
   out.seed = seeds.front();
-  const std::vector<double> fixed{o.radius};
-  const std::vector<double>& radii = o.kind == Segmentation_kind::MIN_CUT ? fixed : o.radii;
+  const std::vector<double> radii = o.segmentation_method == Segmentation_method::MIN_CUT
+                                      ? std::vector<double>{o.background_radius}
+                                      : std::vector<double>(automatic_radii.begin(), automatic_radii.end());
   Cut_outcome best;
   std::vector<std::uint32_t> best_nodes;
   double best_radius = radii.back();
@@ -87,8 +89,8 @@ inline void segment_by_min_cut(const Segmentation_index& index, const P3& locati
   bool fallback_big = false;
   for(double R : radii) {
     Cut_outcome c = min_cut_at_radius(index, location, R, seeds, o, w);
-    const bool big = c.points > o.minimum_foreground;
-    if(radii.size() == 1 || (big && c.cut < o.maximum_cut)) {
+    const bool big = c.points > o.minimum_foreground_size;
+    if(radii.size() == 1 || (big && c.cut < o.maximum_cut_cost)) {
       best = std::move(c), best_nodes = w.nodes, best_radius = R;
       break;
     }
@@ -126,7 +128,8 @@ inline Segmentation_output segment_one(const Segmentation_index& index, const P3
 {
   const auto start = std::chrono::steady_clock::now();
   Segmentation_output out;
-  if(o.kind == Segmentation_kind::ALL || o.kind == Segmentation_kind::COMPONENTS)
+  if(o.segmentation_method == Segmentation_method::ALL_WITHIN_RADIUS ||
+     o.segmentation_method == Segmentation_method::CONNECTED_COMPONENTS)
     segment_within_radius(index, location, o, w, out);
   else
     segment_by_min_cut(index, location, o, w, out);

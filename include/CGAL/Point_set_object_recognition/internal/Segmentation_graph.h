@@ -34,9 +34,10 @@ class Segmentation_index
 public:
   static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
 
+  // `with_wall_nodes`: whether walls have graph nodes (the interactive segmenter's constraints).
   Segmentation_index(const Point_columns& columns, const std::vector<P3>& locations, double reach,
-                     const Segmentation_options& o, bool with_graph)
-    : m_p(columns.points()), m_o(o), m_pc(columns)
+                     const Segmentation_options& o, bool with_graph, bool with_wall_nodes = false)
+    : m_p(columns.points()), m_o(o), m_wall_nodes(with_wall_nodes), m_pc(columns)
   {
     m_lo = columns.lo(), m_side = columns.side();
     if(!with_graph)
@@ -130,7 +131,7 @@ private:
   // The graph of the points `active` (increasing).
   void build_graph(std::vector<std::uint32_t> active)
   {
-    Wall_finder(m_pc, m_o).find(active, !m_o.wall_nodes, m_wall); // without wall nodes, the walls never join an object
+    Wall_finder(m_pc).find(active, !m_wall_nodes, m_wall); // without wall nodes, the walls never join an object
     const std::vector<std::uint32_t> first_of_node = make_nodes(active);
     const std::size_t n = first_of_node.size();
     gather_members(active, n);
@@ -141,17 +142,17 @@ private:
     std::vector<SAI::Vector_3d> c(n);
     for(std::size_t v = 0; v < n; ++v)
       c[v] = SAI::Vector_3d(m_centroid[v][0], m_centroid[v][1], m_centroid[v][2]);
-    const std::size_t k = m_o.neighbors;
+    const std::size_t k = m_o.number_of_neighbors;
     std::vector<std::uint32_t> knn(n * k, none);
-    if(m_o.cell > 0) {
+    if(m_o.graph_cell_size > 0) {
       std::vector<std::uint64_t> cell_key(n, 0);
       for(std::size_t v = 0; v < n; ++v) {
         const P3& q = m_p[first_of_node[v]];
-        cell_key[v] = voxel_key(q[0], q[1], q[2], m_o.cell, m_lo);
+        cell_key[v] = voxel_key(q[0], q[1], q[2], m_o.graph_cell_size, m_lo);
       }
-      Cell_stack_neighbors(c, cell_key, other_nodes).find(k, m_o.threads, knn);
+      Cell_stack_neighbors(c, cell_key, other_nodes).find(k, m_o.number_of_threads, knn);
     } else
-      nearest_in_tree(c, [&](std::size_t v) { return m_wall[first_of_node[v]]; }, k, m_o.threads, knn);
+      nearest_in_tree(c, [&](std::size_t v) { return m_wall[first_of_node[v]]; }, k, m_o.number_of_threads, knn);
     make_edges(c, knn);
   }
 
@@ -161,12 +162,12 @@ private:
   {
     m_node_of_point.assign(m_p.size(), none);
     std::vector<std::uint32_t> first_of_node;
-    if(m_o.cell > 0) {
+    if(m_o.graph_cell_size > 0) {
       Key_map cell(active.size() / 4 + 16); // key -> node
       std::uint64_t last_key = 0;
       std::uint32_t last_node = none; // of the previous point (consecutive points often share it)
       for(std::uint32_t i : active) {
-        const std::uint64_t key = voxel_key(m_p[i][0], m_p[i][1], m_p[i][2], m_o.cell, m_lo) | wall_bit(i);
+        const std::uint64_t key = voxel_key(m_p[i][0], m_p[i][1], m_p[i][2], m_o.graph_cell_size, m_lo) | wall_bit(i);
         if(last_node == none || key != last_key) {
           const auto ins = cell.emplace(key, std::uint32_t(first_of_node.size()));
           if(ins.second)
@@ -225,7 +226,7 @@ private:
   // per node by increasing index.
   void make_edges(const std::vector<SAI::Vector_3d>& c, const std::vector<std::uint32_t>& knn)
   {
-    const std::size_t n = c.size(), k = m_o.neighbors;
+    const std::size_t n = c.size(), k = m_o.number_of_neighbors;
     // The edges, each once: from its first node unless the other holds it too and is smaller.
     std::vector<char> emit(n * k, 0);
     m_adjacent_first.assign(n + 1, 0);
@@ -251,7 +252,7 @@ private:
     m_adjacent.assign(m_adjacent_first[n], 0);
     m_adjacent_weight.assign(m_adjacent_first[n], 0);
     std::vector<std::size_t> fill(m_adjacent_first.begin(), m_adjacent_first.end() - 1);
-    const double s2 = m_o.sigma * m_o.sigma;
+    const double sigma = edge_sigma(m_o), s2 = sigma * sigma;
     for(std::size_t v = 0; v < n; ++v)
       for(std::size_t m = 0; m < k; ++m) {
         if(!emit[v * k + m])
@@ -285,6 +286,7 @@ private:
 
   const std::vector<P3>& m_p;
   const Segmentation_options& m_o;
+  const bool m_wall_nodes;
   std::vector<char> m_wall;
   double m_side = 1.0;
   P3 m_lo{{0, 0, 0}};

@@ -6,8 +6,10 @@
 
 // The options and the result of the segmentation of one object (Object_segmentation.h).
 
+#include <CGAL/Point_set_object_recognition/Segment_objects_options.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -17,33 +19,37 @@ namespace CGAL {
 namespace Point_set_object_recognition {
 namespace internal {
 
-enum class Segmentation_kind { ALL, COMPONENTS, MIN_CUT, MIN_CUT_AUTO };
+typedef Segment_objects_options Segmentation_options;
 
-struct Segmentation_options
+// The data term: the penalty for being foreground rises linearly from the background radius R to
+// outer_factor times the reward at the location, over ramp_width metres (then hard background).
+constexpr double outer_factor = 10.0;
+constexpr double ramp_width = 1.0;
+// With cells, the nodes nearest to the seed's node that are also in the hard foreground.
+constexpr std::size_t seed_neighbors = 3;
+// The background radii that the automatic radius tries, increasing (metres).
+constexpr std::array<double, 5> automatic_radii{{1, 2, 3, 4, 5}};
+// Walls (facades): points of the columns of side `wall_column_side` that span more than
+// `wall_column_height` of height, within `wall_line_tolerance` of the line fitted to the high
+// points of such columns around when that line is long and thin (a pole or a tree is not). They
+// form their own graph nodes, with no edge to the others, and never seed the foreground.
+constexpr double wall_column_height = 3.5, wall_column_side = 0.2, wall_line_tolerance = 0.05;
+// The edge sigma without `edge_sigma` given: so many graph cells, or this when there are no cells.
+constexpr double edge_sigma_in_cells = 4, edge_sigma_without_cells = 0.2;
+
+// The length scale of the edge weights.
+inline double edge_sigma(const Segmentation_options& o)
 {
-  Segmentation_kind kind = Segmentation_kind::MIN_CUT_AUTO;
-  double radius = 2;               // fixed background radius (min-cut), or radius (all, components)
-  double foreground_height = 1.2;  // height of the hard foreground above the location
-  std::size_t neighbors = 8;       // k of the kNN graph
-  double sigma = 0.8;              // edge weight exp(-(d / sigma)^2): 4 cells by default
-  double background_weight = 0.1;  // foreground reward per point at the location (data term scale)
-  double outer_factor = 10.0;      // ... times this at radius + ramp width (then hard background)
-  double ramp_width = 1.0;         // width of the second ramp (m)
-  double cell = 0.2;               // graph nodes: cells of this side; 0: the points
-  std::size_t maximum_nodes = 1000; // contraction target (0: none)
-  std::size_t seed_neighbors = 3;   // nodes nearest to the seed's node also in the hard foreground
-  std::size_t minimum_foreground = 35;
-  double maximum_cut = 0.4;
-  double spacing = 0.3;            // connected components
-  std::vector<double> radii{1, 2, 3, 4, 5}; // automatic radius
-  std::size_t threads = 0;
-  // Walls (facades): points of the columns of side `wall_column` that span more than
-  // `wall_height` of height, within `wall_tolerance` of the line fitted to the high points of such
-  // columns around when that line is long and thin (a pole or a tree is not; 0: no walls). They
-  // form their own graph nodes, with no edge to the others, and never seed the foreground.
-  double wall_height = 3.5, wall_column = 0.2, wall_tolerance = 0.05;
-  bool wall_nodes = false; // whether walls have graph nodes (the interactive segmenter's constraints)
-};
+  if(o.edge_sigma)
+    return *o.edge_sigma;
+  return o.graph_cell_size > 0 ? edge_sigma_in_cells * o.graph_cell_size : edge_sigma_without_cells;
+}
+
+// The largest background radius of a min-cut method.
+inline double largest_background_radius(const Segmentation_options& o)
+{
+  return o.segmentation_method == Segmentation_method::MIN_CUT ? o.background_radius : automatic_radii.back();
+}
 
 struct Segmentation_output
 {
@@ -57,21 +63,21 @@ inline void check_segmentation_options(const Segmentation_options& o, const std:
 {
   typedef CGAL::Shape_analysis::Bad_input Bad_input;
   const auto positive = [](double v) { return v > 0 && std::isfinite(v); };
-  if(!positive(o.radius))
+  if(!positive(o.background_radius))
     throw Bad_input(who + ": background_radius must be a positive number");
   if(!std::isfinite(o.foreground_height))
     throw Bad_input(who + ": foreground_height must be a finite number");
-  if(o.neighbors < 1 || o.neighbors > 64)
+  if(o.number_of_neighbors < 1 || o.number_of_neighbors > 64)
     throw Bad_input(who + ": number_of_neighbors must be between 1 and 64");
-  if(!(o.cell >= 0) || !std::isfinite(o.cell))
+  if(!(o.graph_cell_size >= 0) || !std::isfinite(o.graph_cell_size))
     throw Bad_input(who + ": graph_cell_size must be zero or a positive number");
-  if(!positive(o.sigma))
+  if(!positive(edge_sigma(o)))
     throw Bad_input(who + ": edge_sigma must be a positive number");
   if(!(o.background_weight >= 0) || !std::isfinite(o.background_weight))
     throw Bad_input(who + ": background_weight must be a non-negative number");
-  if(!(o.maximum_cut >= 0))
+  if(!(o.maximum_cut_cost >= 0))
     throw Bad_input(who + ": maximum_cut_cost must be a non-negative number");
-  if(!positive(o.spacing))
+  if(!positive(o.component_spacing))
     throw Bad_input(who + ": component_spacing must be a positive number");
 }
 

@@ -5,8 +5,8 @@
 #define CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_WALL_DETECTION_H
 
 // The points of the walls (facades) of a scene, which the segmentation of objects keeps apart
-// (see Segmentation_options): the tall columns, those whose high points spread along a line, the
-// fine cells where those high points stack, and the points under them.
+// (the wall constants of Segmentation_options.h): the tall columns, those whose high points
+// spread along a line, the fine cells where those high points stack, and the points under them.
 
 #include <CGAL/Point_set_object_recognition/internal/Column_index.h>
 #include <CGAL/Point_set_object_recognition/internal/Point_columns.h>
@@ -26,8 +26,8 @@ namespace internal {
 class Wall_finder
 {
 public:
-  Wall_finder(const Point_columns& columns, const Segmentation_options& o)
-    : m_p(columns.points()), m_o(o), m_lo(columns.lo()), m_hi(columns.hi()), m_s(o.wall_column)
+  explicit Wall_finder(const Point_columns& columns)
+    : m_p(columns.points()), m_lo(columns.lo()), m_hi(columns.hi()), m_s(wall_column_side)
   {}
 
   // Flags the points of `active` (increasing) that lie on a wall in `wall` (per point), and with
@@ -36,7 +36,7 @@ public:
   void find(std::vector<std::uint32_t>& active, bool drop_walls, std::vector<char>& wall)
   {
     wall.assign(m_p.size(), 0);
-    if(!(m_o.wall_height > 0) || !(m_s > 0) || active.empty())
+    if(active.empty())
       return;
     assign_columns(active);
     if(!find_tall_columns())
@@ -81,7 +81,7 @@ private:
     // the columns exactly (a power of two of them along each axis, as by default: then a fine
     // cell lies in a single column), per point its fine cell in its column (`per` x `per` of
     // them, row by row; `outside` when there is none).
-    m_fine = 0.5 * m_o.wall_tolerance;
+    m_fine = 0.5 * wall_line_tolerance;
     m_per = long(std::lround(m_s / m_fine));
     m_nested = m_per >= 1 && m_per <= 16 && (m_per & (m_per - 1)) == 0 && double(m_per) * m_fine == m_s;
     m_masks = m_nested && m_per * m_per <= 64; // then a column's fine cells are bits of a mask
@@ -125,7 +125,7 @@ private:
     const std::size_t nc = m_keys.size();
     m_tall.assign(nc, std::numeric_limits<double>::quiet_NaN());
     for(std::uint32_t c = 0; c < nc; ++c)
-      if(m_range[c][1] - m_range[c][0] > m_o.wall_height)
+      if(m_range[c][1] - m_range[c][0] > wall_column_height)
         m_tall[c] = m_range[c][0], m_tall_columns.push_back(c);
     return !m_tall_columns.empty();
   }
@@ -301,7 +301,6 @@ private:
   }
 
   const std::vector<P3>& m_p;
-  const Segmentation_options& m_o;
   const P3 m_lo, m_hi;
   const double m_s;    // the side of the columns
   double m_fine = 0;   // the side of the fine cells

@@ -23,6 +23,7 @@
 // cut it (weights 1, or 1 / J with the score-weighted option, J = sum over segments of
 // cut(S) / size(S) under the plain cut costs).
 
+#include <CGAL/Randomized_cuts/Partition_function_options.h>
 #include <CGAL/Randomized_cuts/Sampling_method.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/internal/Dual_graph.h>
@@ -50,29 +51,32 @@ namespace internal {
 namespace SAI = CGAL::Shape_analysis::internal;
 using SAI::Dual_graph;
 
-struct Sampling_options
+// What the samplers run with: the options of partition_function(), with the list of part sizes
+// (min-cut; several: the multi-scale partition function; one by default: `part_size`) and whether
+// each sample's cut edges are kept (for the consistency of cuts).
+struct Sampling_options : Partition_function_options
 {
-  Sampling_method method = MIN_CUT;
-  std::size_t number_of_samples = 400;
-  double convergence_tolerance = 0; // 0: draw every sample
-  std::uint64_t seed = 0;
-  std::vector<double> part_sizes{0.05}; // min-cut; several: multi-scale
-  std::size_t number_of_clusters = 10;  // K-means seeds; hierarchical: largest segment count
-  double randomness = 0.02;             // hierarchical
-  bool score_weighting = false;
-  std::size_t number_of_threads = 0; // 0: all
-  bool keep_samples = false;         // keep each sample's cut edges (consistency of cuts)
-  std::size_t batch_size = 64;       // samples between two convergence checks
-  std::size_t max_k_means_iterations = 30;
-  double small_segment_fraction = 1e-4; // hierarchical: specks merged first
-  std::function<void(double)> progress;
+  Sampling_options() : Sampling_options(Partition_function_options()) {}
+  explicit Sampling_options(const Partition_function_options& o)
+    : Partition_function_options(o), part_sizes{o.part_size}
+  {}
+
+  std::vector<double> part_sizes;
+  bool keep_samples = false;
 };
+
+// Samples drawn between two convergence checks.
+constexpr std::size_t sampling_batch_size = 64;
+// K-means: the largest number of rounds (assignment, then seeds moved) of a sample.
+constexpr std::size_t max_k_means_iterations = 30;
+// Hierarchical: segments below this fraction of the total area (specks) are merged first.
+constexpr double small_segment_fraction = 1e-4;
 
 inline void check_sampling_options(const Sampling_options& o, std::size_t number_of_nodes,
                                    const std::string& who)
 {
   using CGAL::Shape_analysis::Bad_input;
-  if(o.method != MIN_CUT && o.method != K_MEANS && o.method != HIERARCHICAL)
+  if(o.sampling_method != MIN_CUT && o.sampling_method != K_MEANS && o.sampling_method != HIERARCHICAL)
     throw Bad_input(who + ": unknown sampling_method");
   if(o.number_of_samples == 0)
     throw Bad_input(who + ": number_of_samples must be at least 1");
@@ -83,7 +87,7 @@ inline void check_sampling_options(const Sampling_options& o, std::size_t number
   for(double s : o.part_sizes)
     if(!(s > 0) || !(s <= 1.0 / 6.0))
       throw Bad_input(who + ": a part size must be in (0, 1/6], not " + std::to_string(s));
-  if(o.method != MIN_CUT && o.part_sizes.size() > 1)
+  if(o.sampling_method != MIN_CUT && o.part_sizes.size() > 1)
     throw Bad_input(who + ": several part sizes (multi-scale) need the MIN_CUT sampling_method");
   if(o.number_of_clusters < 2)
     throw Bad_input(who + ": number_of_clusters must be at least 2");
@@ -235,7 +239,7 @@ public:
   void draw(std::size_t index, Workspace& w, Sample& out) const
   {
     const Dual_graph& g = m_g;
-    SAI::Random_stream rng(m_o.seed, index);
+    SAI::Random_stream rng(m_o.random_seed, index);
     m_area.draw_distinct(rng, 2, w.pair, w.taken);
     const std::uint32_t a = w.pair[0], b = w.pair[1];
     out.source = a;
@@ -302,14 +306,14 @@ public:
     const Dual_graph& g = m_g;
     const std::size_t n = g.number_of_nodes(), m = g.number_of_edges();
     const std::size_t k = (std::min)(m_o.number_of_clusters, n);
-    SAI::Random_stream rng(m_o.seed, index);
+    SAI::Random_stream rng(m_o.random_seed, index);
     m_area.draw_distinct(rng, k, w.seeds, w.taken);
     w.seed_labels.resize(k);
     std::iota(w.seed_labels.begin(), w.seed_labels.end(), 0u);
     w.inside_length.resize(m);
     for(std::size_t iteration = 0;; ++iteration) {
       w.assign.run(g, g.traversal_cost, w.seeds, w.seed_labels);
-      if(iteration + 1 >= m_o.max_k_means_iterations)
+      if(iteration + 1 >= max_k_means_iterations)
         break;
       // Depth of every face in its segment: distance from the segment's boundary faces, without
       // leaving the segment.
@@ -381,8 +385,8 @@ public:
     const std::size_t n = g.number_of_nodes();
     const std::size_t k_max = (std::min)(m_o.number_of_clusters, n);
     SAI::Normalized_cut_clustering clustering(g.node_size, g.edge_source, g.edge_target, g.cut_cost);
-    const double small_size = m_o.small_segment_fraction * g.total_size();
-    const std::uint64_t seed = SAI::Random_stream(m_o.seed, index).next();
+    const double small_size = small_segment_fraction * g.total_size();
+    const std::uint64_t seed = SAI::Random_stream(m_o.random_seed, index).next();
     clustering.run(2, {}, {}, m_o.randomness, seed, small_size);
     const auto& merges = clustering.merges();
     // The segmentation into k_max segments (or fewer, if the graph has fewer components... it is
@@ -472,7 +476,7 @@ public:
 
   Sampling_result run()
   {
-    switch(m_o.method) {
+    switch(m_o.sampling_method) {
     case K_MEANS: return run_with<K_means_sampler>();
     case HIERARCHICAL: return run_with<Hierarchical_sampler>();
     default: return run_with<Min_cut_sampler>();
@@ -483,7 +487,7 @@ private:
   template <typename Sampler>
   Sampling_result run_with()
   {
-    const std::size_t scales = m_o.method == MIN_CUT ? m_o.part_sizes.size() : 1;
+    const std::size_t scales = m_o.sampling_method == MIN_CUT ? m_o.part_sizes.size() : 1;
     const std::size_t m = m_g.number_of_edges();
     Sampler sampler(m_g, m_o);
     SAI::Parallel_workspaces<typename Sampler::Workspace> workspaces(m_o.number_of_threads);
@@ -492,7 +496,7 @@ private:
     std::vector<std::vector<double>> previous;
     Sampling_result result;
     std::vector<Sample> batch;
-    const std::size_t batch_size = (std::max<std::size_t>)(1, m_o.batch_size);
+    const std::size_t batch_size = sampling_batch_size;
     for(std::size_t begin = 0; begin < m_o.number_of_samples; begin += batch_size) {
       const std::size_t end = (std::min)(m_o.number_of_samples, begin + batch_size);
       batch.assign(end - begin, Sample());
@@ -520,8 +524,8 @@ private:
         }
       }
       result.number_of_samples = end;
-      if(m_o.progress)
-        m_o.progress(double(end) / double(m_o.number_of_samples));
+      if(m_o.progress_callback)
+        m_o.progress_callback(double(end) / double(m_o.number_of_samples));
       if(m_o.convergence_tolerance > 0) {
         values(sum, total, result.values);
         if(!previous.empty()) {

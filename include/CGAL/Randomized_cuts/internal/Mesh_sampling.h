@@ -4,9 +4,10 @@
 #ifndef CGAL_RANDOMIZED_CUTS_INTERNAL_MESH_SAMPLING_H
 #define CGAL_RANDOMIZED_CUTS_INTERNAL_MESH_SAMPLING_H
 
-// The named parameters of the partition function, and the sampling of a mesh's dual graph (with
-// links between its connected components) that the public functions share.
+// The options of the partition function, and the sampling of a mesh's dual graph (with links
+// between its connected components) that the public functions share.
 
+#include <CGAL/Randomized_cuts/Partition_function_options.h>
 #include <CGAL/Randomized_cuts/internal/Cut_sampling.h>
 #include <CGAL/Shape_analysis/parameters.h>
 #include <CGAL/Shape_analysis/internal/Component_links.h>
@@ -24,39 +25,30 @@ namespace internal {
 
 namespace snp = CGAL::Shape_analysis::internal_np;
 
-// Reads the sampling options of `np` (defaults of the thesis).
+// The sampling options of `o`, with the part sizes of `np` if it gives `part_sizes` (one part size
+// for every function but multiscale_partition_function(), which checks the number).
 template <typename NamedParameters>
-Sampling_options sampling_options(const NamedParameters& np, const std::string& who)
+Sampling_options sampling_options(const Partition_function_options& o, const NamedParameters& np)
 {
-  using SAI::parameter_value;
-  using CGAL::parameters::get_parameter;
-  Sampling_options o;
-  o.method = parameter_value<Sampling_method>(np, snp::sampling_method_tag, MIN_CUT);
-  o.number_of_samples =
-    parameter_value<std::size_t>(np, CGAL::internal_np::number_of_samples, std::size_t(400));
-  o.convergence_tolerance = parameter_value<double>(np, snp::convergence_tolerance_tag, 0.0);
-  o.seed = parameter_value<std::uint64_t>(np, CGAL::internal_np::random_seed, std::uint64_t(0));
-  const double part_size = parameter_value<double>(np, snp::part_size_tag, 0.05);
-  o.part_sizes = parameter_value<std::vector<double>>(np, snp::part_sizes_tag,
-                                                     std::vector<double>{part_size});
-  o.number_of_clusters =
-    parameter_value<std::size_t>(np, snp::number_of_clusters_tag, std::size_t(10));
-  o.randomness = parameter_value<double>(np, snp::randomness_tag, 0.02);
-  o.score_weighting = parameter_value<bool>(np, snp::score_weighting_tag, false);
-  o.number_of_threads = parameter_value<std::size_t>(np, snp::number_of_threads_tag, std::size_t(0));
-  o.progress = parameter_value<std::function<void(double)>>(np, snp::progress_callback_tag,
-                                                           std::function<void(double)>());
-  (void)who;
-  return o;
+  Sampling_options s(o);
+  s.part_sizes = SAI::parameter_value(np, snp::part_sizes_tag, s.part_sizes);
+  return s;
+}
+
+// The sampling options of `np` (the defaults of Partition_function_options for the others).
+template <typename NamedParameters>
+Sampling_options sampling_options(const NamedParameters& np)
+{
+  return sampling_options(partition_function_options(np), np);
 }
 
 // The options of the links between connected components.
-template <typename NamedParameters>
-SAI::Component_link_options link_options(const NamedParameters& np, const std::string& who)
+inline SAI::Component_link_options link_options(const Partition_function_options& po,
+                                                const std::string& who)
 {
   SAI::Component_link_options o;
-  o.link_distance = SAI::parameter_value<double>(np, snp::component_link_distance_tag, 0.1);
-  o.factor = SAI::parameter_value<double>(np, snp::component_link_factor_tag, 0.01);
+  o.link_distance = po.component_link_distance;
+  o.factor = po.component_link_factor;
   if(!(o.link_distance >= 0) || !std::isfinite(o.link_distance))
     throw CGAL::Shape_analysis::Bad_input(who + ": component_link_distance must be a finite number >= 0");
   if(!(o.factor > 0) || !std::isfinite(o.factor))
@@ -64,20 +56,27 @@ SAI::Component_link_options link_options(const NamedParameters& np, const std::s
   return o;
 }
 
-// The dual graph of a mesh, linked into one piece, and its sampling options.
+// The dual graph of a mesh, linked into one piece, and its sampling options. `mesh_np` gives the
+// maps of the mesh (vertex_point_map, geom_traits, face_index_map); `o` the options.
 template <typename TriangleMesh, typename NamedParameters>
 struct Mesh_sampling
 {
   SAI::Mesh_dual_graph<TriangleMesh, NamedParameters> mesh_graph;
   Sampling_options options;
 
-  Mesh_sampling(const TriangleMesh& tm, const NamedParameters& np, const std::string& who)
-    : mesh_graph(tm, np, who), options(sampling_options(np, who))
+  Mesh_sampling(const TriangleMesh& tm, const NamedParameters& mesh_np, const Sampling_options& o,
+                const std::string& who)
+    : mesh_graph(tm, mesh_np, o.concavity_exponent, who), options(o)
   {
-    const SAI::Component_link_options links = link_options(np, who);
+    const SAI::Component_link_options links = link_options(options, who);
     check_sampling_options(options, mesh_graph.graph.number_of_nodes(), who);
     SAI::add_component_links(mesh_graph.graph, links);
   }
+
+  // The maps and the options of `np`.
+  Mesh_sampling(const TriangleMesh& tm, const NamedParameters& np, const std::string& who)
+    : Mesh_sampling(tm, np, sampling_options(np), who)
+  {}
 
   const Dual_graph& graph() const { return mesh_graph.graph; }
 

@@ -14,6 +14,7 @@
 // Optionally the boundaries are then refined by moving single faces between segments while the
 // area-normalized cut J = sum cut(S) / size(S) decreases.
 
+#include <CGAL/Randomized_cuts/Segment_with_partition_function_options.h>
 #include <CGAL/Randomized_cuts/internal/Consistent_cuts.h>
 #include <CGAL/Randomized_cuts/internal/Cut_sampling.h>
 #include <CGAL/Shape_analysis/internal/Component_links.h>
@@ -32,18 +33,17 @@ namespace CGAL {
 namespace Randomized_cuts {
 namespace internal {
 
-struct Partition_segmentation_options
-{
-  std::size_t number_of_segments = 8;
-  Sampling_options sampling;
-  bool boundary_refinement = true;
-};
+// The options of the segmentation. Only its own members (number_of_segments,
+// boundary_refinement) are read from it: the partition functions are sampled with the sampling
+// options given beside it, which hold the part size actually used.
+typedef Segment_with_partition_function_options Partition_segmentation_options;
 
 class Partition_segmentation
 {
 public:
-  Partition_segmentation(const Dual_graph& g, const Partition_segmentation_options& o)
-    : m_g(g), m_o(o)
+  Partition_segmentation(const Dual_graph& g, const Partition_segmentation_options& o,
+                         const Sampling_options& sampling)
+    : m_g(g), m_o(o), m_sampling(sampling)
   {}
 
   // Labels 0..k-1 per node, numbered by decreasing size. `whole_values` (if not null) receives
@@ -91,8 +91,8 @@ public:
     }
     if(m_o.boundary_refinement && segments > 1)
       refine(label, segments);
-    if(m_o.sampling.progress)
-      m_o.sampling.progress(1.0);
+    if(m_sampling.progress_callback)
+      m_sampling.progress_callback(1.0);
     return CGAL::Shape_analysis::internal::number_by_size(label, m_g.node_size);
   }
 
@@ -128,18 +128,17 @@ private:
       ++m_steps_done;
       return p;
     }
-    Sampling_options so = m_o.sampling;
+    Sampling_options so = m_sampling;
     // The whole graph is sampled with the caller's seed (its partition function is then the one
     // partition_function() gives); every later segment with a seed of its own.
-    so.seed = index == 0 ? m_o.sampling.seed
-                         : SAI::Random_stream::mix(m_o.sampling.seed + 0x9E3779B97F4A7C15ull * index);
+    so.random_seed = index == 0 ? m_sampling.random_seed
+                                : SAI::Random_stream::mix(m_sampling.random_seed + 0x9E3779B97F4A7C15ull * index);
     so.keep_samples = true;
-    so.convergence_tolerance = m_o.sampling.convergence_tolerance;
     const std::size_t step = m_steps_done;
-    if(m_o.sampling.progress) {
+    if(m_sampling.progress_callback) {
       const double total = double((std::max)(m_total_steps, step + 1));
-      so.progress = [this, step, total](double f) {
-        m_o.sampling.progress(0.99 * (double(step) + f) / total);
+      so.progress_callback = [this, step, total](double f) {
+        m_sampling.progress_callback(0.99 * (double(step) + f) / total);
       };
     }
     const Sampling_result r = Cut_sampling(sub, so).run();
@@ -183,6 +182,7 @@ private:
 
   const Dual_graph& m_g;
   const Partition_segmentation_options& m_o;
+  const Sampling_options& m_sampling;
   std::uint64_t m_proposals = 0;
   std::size_t m_total_steps = 1, m_steps_done = 0;
 };

@@ -16,6 +16,7 @@
 //    short links between nearby components (same cost formula), so that the graph is connected.
 // The work is O(n log n) in the number n of faces for any number of components.
 
+#include <CGAL/Shape_analysis/defaults.h>
 #include <CGAL/Shape_analysis/internal/Dual_graph.h>
 #include <CGAL/Shape_analysis/internal/Point_tree.h>
 #include <CGAL/Shape_analysis/internal/Union_find.h>
@@ -33,11 +34,12 @@ namespace CGAL {
 namespace Shape_analysis {
 namespace internal {
 
+// Callers set the distance and the factor from their options; these are the Core's defaults.
 struct Component_link_options
 {
-  double link_distance = 0.1; // fraction of the bounding-box diagonal
+  double link_distance = default_component_link_distance; // fraction of the bounding-box diagonal
   double epsilon = 0.005;     // fraction of the bounding-box diagonal
-  double factor = 0.01;       // k_cc
+  double factor = default_component_link_factor;          // k_cc
   // Components searched for the links of one component's faces (the nearest by bounding box).
   std::size_t max_candidate_components = 8;
   // Links kept per face (to its nearest other components).

@@ -5,9 +5,9 @@
 #define CGAL_SHAPE_ANALYSIS_INTERNAL_MESH_DUAL_GRAPH_H
 
 // What every mesh entry point does first: read the named parameters that say how to see the mesh
-// (vertex_point_map, geom_traits, face_index_map, concavity_exponent), check the mesh, and build
-// its weighted dual graph, remembering which face and which edge each node and graph edge stands
-// for.
+// (vertex_point_map, geom_traits, face_index_map), check the mesh, and build its weighted dual
+// graph with the caller's concavity exponent (the caller's options struct holds it and its
+// default), remembering which face and which edge each node and graph edge stands for.
 
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/parameters.h>
@@ -44,10 +44,11 @@ struct Mesh_dual_graph
     return get(m_fim, f);
   }
 
-  // Checks `tm` (non-empty triangle mesh with finite coordinates and a positive area) and builds
-  // its dual graph with the concavity exponent of `np` (default 10); throws Bad_input naming
+  // Checks `tm` (non-empty triangle mesh with finite coordinates and a positive area) and
+  // `concavity_exponent`, and builds its dual graph with the maps of `np`; throws Bad_input naming
   // `who` otherwise.
-  Mesh_dual_graph(const TriangleMesh& tm, const NamedParameters& np, const std::string& who)
+  Mesh_dual_graph(const TriangleMesh& tm, const NamedParameters& np, double concavity_exponent,
+                  const std::string& who)
     : m_fim(tm, CGAL::get_initialized_face_index_map(tm, np), who)
   {
     using CGAL::parameters::choose_parameter;
@@ -58,8 +59,7 @@ struct Mesh_dual_graph
     const Point_to_vector<Geom_traits> to_vector{
       choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits))};
     check_triangle_mesh(tm, vpm, to_vector, who);
-    const double alpha =
-      parameter_value<double>(np, internal_np::concavity_exponent_tag, 10.0);
+    const double alpha = concavity_exponent;
     if(!(alpha >= 0) || !std::isfinite(alpha))
       throw Bad_input(who + ": concavity_exponent must be a finite number >= 0");
     build_dual_graph(tm, vpm, m_fim, alpha, graph, to_vector);

@@ -17,6 +17,7 @@
 //      ranked best first, and the support of each (per face: how closely the mirror image of the
 //      face lies on the surface).
 
+#include <CGAL/Surface_mesh_symmetrization/Detect_reflective_symmetries_options.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Surface_index.h>
 
 #include <algorithm>
@@ -31,17 +32,13 @@ namespace CGAL {
 namespace Surface_mesh_symmetrization {
 namespace internal {
 
-struct Detection_options
-{
-  std::size_t number_of_samples = 1000;  // voting and refinement samples
-  std::size_t maximum_number_of_symmetries = 5;
-  double minimum_support = 0.1;          // smallest support fraction of a reported plane
-  double support_tolerance = 0.01;       // relative to the diagonal: sigma of the support weights
-  double score_cap = 0.05;               // relative to the diagonal: truncation of the distances
-  double normal_tolerance_degrees = 20;  // of the pair votes
-  std::size_t number_of_threads = 0;
-  std::uint64_t seed = 0;
-};
+typedef Detect_reflective_symmetries_options Detection_options;
+
+// The truncation of the symmetry distances in the score, relative to the diagonal.
+constexpr double score_cap = 0.05;
+// The largest angle between the normals of a voting pair of samples and mirror images of each
+// other across the pair's bisector plane, in degrees.
+constexpr double normal_tolerance_degrees = 20;
 
 struct Detected_plane
 {
@@ -293,7 +290,7 @@ public:
   {
     const std::size_t n = n_samples == 0 ? m_samples.points.size()
                                          : (std::min)(n_samples, m_samples.points.size());
-    const double cap = m_o.score_cap * m_diagonal;
+    const double cap = score_cap * m_diagonal;
     double sum = 0;
     std::uint32_t hint = Surface_index::no_face;
     for(std::size_t i = 0; i < n; ++i) {
@@ -349,7 +346,7 @@ private:
   {
     const std::size_t n = m_samples.points.size();
     const double min_length = 0.01 * m_diagonal;
-    const double cos_tolerance = std::cos(m_o.normal_tolerance_degrees * 3.14159265358979323846 / 180.0);
+    const double cos_tolerance = std::cos(normal_tolerance_degrees * 3.14159265358979323846 / 180.0);
     std::vector<std::vector<Plane_3d>> per_row(n);
     SAI::Parallel_workspaces<char> parallel(m_o.number_of_threads);
     parallel.for_each(0, n, [&](std::size_t i, char&) {
@@ -425,7 +422,7 @@ inline Detected_plane exhaustive_plane(const Surface& input, const Detection_opt
   for(Vector_3d& p : surface.points)
     p -= centroid;
   const Surface_index index(surface);
-  const Surface_samples samples = sample_surface(surface, (std::max)(std::size_t(20), o.number_of_samples), o.seed, 0);
+  const Surface_samples samples = sample_surface(surface, (std::max)(std::size_t(20), o.number_of_samples), o.random_seed, 0);
   const Plane_detector detector(surface, index, samples, diagonal, o);
   std::vector<std::pair<double, Plane_3d>> scored(directions);
   SAI::Parallel_workspaces<char> parallel(o.number_of_threads);
@@ -482,7 +479,7 @@ inline std::vector<Detected_plane> detect_planes(const Surface& input, const Det
   const Surface_index index(surface);
   if(index.empty())
     return result;
-  const Surface_samples samples = sample_surface(surface, (std::max)(std::size_t(20), o.number_of_samples), o.seed, 0);
+  const Surface_samples samples = sample_surface(surface, (std::max)(std::size_t(20), o.number_of_samples), o.random_seed, 0);
   const Plane_detector detector(surface, index, samples, diagonal, o);
 
   // Stage 1: every candidate refined on a subset of the samples.

@@ -40,6 +40,7 @@
 //     steps that trade the symmetry error against the relative change of the edge lengths, all
 //     three coordinates free (refine_step()), the weight of the error growing per step.
 
+#include <CGAL/Surface_mesh_symmetrization/Symmetrize_options.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Isometric_refinement.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Mirror_points.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Symmetrization_levels.h>
@@ -66,22 +67,15 @@ struct Solver_symmetry
   std::vector<double> vertex_weight; // per vertex of the finest level, in [0, 1]; empty: 1
 };
 
-struct Symmetrization_options
+// The solver's own settings, which are not named parameters (tests change some of them to reach
+// a path of the solver on a small mesh). The named parameters are in Symmetrize_options.
+struct Symmetrizer_settings
 {
-  std::size_t number_of_iterations = 5;   // steps of alpha on the coarsest level
-  double shape_weight = 1;                // factor of E_shape
-  double displacement_weight = 0.01;      // beta
-  std::size_t number_of_levels = 0;       // 0: automatic
-  std::size_t coarsest_level_size = 20000; // vertices
-  double symmetry_tolerance = 1e-6;       // relative to the diagonal: projection steps stop
   std::size_t projection_iterations = 8;  // most steps at alpha = 1 per level
   double stall_ratio = 0.95;              // projection steps stop when a step's error is above this times the previous one
-  double constrained_ratio = 100;         // alpha / (1 - alpha) in the constrained steps (final_symmetry_weight)
   double schedule_exponent = 4;           // the schedule ends at alpha / (1 - alpha) = 10^this
   std::size_t direct_solver_limit = 2000000; // vertices
-  std::size_t number_of_threads = 0;
-  double target_error = 1e-4;             // relative to the diagonal: the refinement stops below it
-  std::size_t refinement_steps = 14;      // most steps of the isometric refinement
+  std::size_t refinement_steps = 14;      // most steps of the isometric refinement (none when target_symmetry_error is 0)
   double refinement_ratio = 1e3;          // its first weight of the symmetry error against the edge lengths
   std::size_t refinement_limit = 50000;   // vertices: larger meshes are refined locally (refine_locally())
   double maximum_constrained_ratio = 1e5; // the largest weight of the constrained steps of larger meshes
@@ -90,7 +84,6 @@ struct Symmetrization_options
   std::size_t local_refinement_steps = 4; // most steps of the local refinement of larger meshes
   std::size_t local_refinement_rings = 1; // neighbour rings around its vertices
   double tangential_weight = 0.1;         // the smallest weight of the tangential part of the mirror residuals in the refinement
-  std::function<void(double)> progress;
 };
 
 struct Iteration_record
@@ -137,8 +130,8 @@ class Symmetrizer
 {
 public:
   Symmetrizer(const Surface& input, const std::vector<Solver_symmetry>& symmetries,
-              const Symmetrization_options& o)
-    : m_input(input), m_o(o), m_step(o.direct_solver_limit)
+              const Symmetrize_options& o, const Symmetrizer_settings& settings = {})
+    : m_input(input), m_o(o), m_s(settings), m_step(settings.direct_solver_limit)
   {
     for(const Solver_symmetry& s : symmetries) {
       m_transforms.push_back(s.transform);
@@ -181,7 +174,7 @@ public:
     const std::size_t L = m_levels.size();
     for(std::size_t l = 0; l < L; ++l)
       m_total_work += double(m_levels[l].original.number_of_vertices()) *
-                      double(schedule(l).size() + m_o.projection_iterations / 2);
+                      double(schedule(l).size() + m_s.projection_iterations / 2);
     std::vector<Vector_3d> x; // positions of the current level
     for(std::size_t step = 0; step < L; ++step) {
       const std::size_t l = L - 1 - step;
@@ -191,7 +184,7 @@ public:
       run_level(l, step > 0, x, out);
       if(l == 0 && refinable(level))
         refine(level, x, out);
-      else if(escalates(l) && m_o.local_refinement_steps > 0)
+      else if(escalates(l) && m_s.local_refinement_steps > 0)
         refine_locally(level, x, out);
     }
     out.points = x;
@@ -226,8 +219,8 @@ private:
   // growing constrained weights.
   bool escalates(std::size_t l) const
   {
-    return l == 0 && !refinable(m_levels[l]) && m_o.target_error > 0 &&
-           m_o.maximum_constrained_ratio > m_o.constrained_ratio;
+    return l == 0 && !refinable(m_levels[l]) && m_o.target_symmetry_error > 0 &&
+           m_s.maximum_constrained_ratio > m_o.final_symmetry_weight;
   }
 
   // The steps of the schedule on level l, then constrained steps until the error is below the
@@ -241,8 +234,8 @@ private:
     r.alphas = schedule(l);
     r.escalate = escalates(l);
     // It starts from the schedule's last weight: a smaller one would undo the last steps.
-    m_constrained_ratio = r.escalate ? (std::max)(m_o.constrained_ratio, std::pow(10.0, m_o.schedule_exponent))
-                                     : m_o.constrained_ratio;
+    m_constrained_ratio = r.escalate ? (std::max)(m_o.final_symmetry_weight, std::pow(10.0, m_s.schedule_exponent))
+                                     : m_o.final_symmetry_weight;
     // On the finest level, the input's mirror points are the first hints.
     if(l == 0)
       r.mirrors.swap(m_input_mirrors);
@@ -266,8 +259,8 @@ private:
       }
       out.iterations.push_back(Iteration_record{l, alpha, 0.0});
       m_done_work += double(level.original.number_of_vertices());
-      if(m_o.progress)
-        m_o.progress((std::min)(0.99, m_done_work / (std::max)(1.0, m_total_work)));
+      if(m_o.progress_callback)
+        m_o.progress_callback((std::min)(0.99, m_done_work / (std::max)(1.0, m_total_work)));
     }
     if(r.last_tracked) { // the last positions, exactly
       r.mirrors = exact_mirrors(level, x, &r.mirrors);
@@ -302,7 +295,7 @@ private:
         r.best_x = x;
       }
     }
-    if(!coarsest || s < 2 || r.extra_steps >= m_o.coarsest_extra_steps || !(e < m_o.stall_ratio * r.previous_error))
+    if(!coarsest || s < 2 || r.extra_steps >= m_s.coarsest_extra_steps || !(e < m_s.stall_ratio * r.previous_error))
       return false;
     r.previous_error = e;
     ++r.extra_steps;
@@ -336,7 +329,7 @@ private:
     bool rechecked = false;
     // Tracked mirrors leave out the vertices that only an exact search finds one for, which
     // are the farthest: their error is checked once it is well below the target.
-    if(tracked && e <= 0.75 * m_o.target_error) {
+    if(tracked && e <= 0.75 * m_o.target_symmetry_error) {
       r.mirrors = exact_mirrors(level, x, &r.mirrors);
       e = rms_mirror_distance(r.mirrors, level.weights) / m_diagonal;
       rechecked = true;
@@ -364,19 +357,19 @@ private:
     r.previous_tracked = tracked;
     if(!tracked)
       r.previous_exact = e;
-    const bool stalled = r.projections >= 2 && e > m_o.stall_ratio * reference;
+    const bool stalled = r.projections >= 2 && e > m_s.stall_ratio * reference;
     const bool slow = r.projections >= 2 && e > 0.9 * reference;
     r.previous_constrained = e;
-    if(r.escalate && e > m_o.target_error && r.total_projections < m_o.maximum_constrained_steps &&
-       (slow || r.projections >= m_o.projection_iterations) && m_constrained_ratio < m_o.maximum_constrained_ratio) {
-      m_constrained_ratio = (std::min)(m_o.maximum_constrained_ratio, m_constrained_ratio * 10);
+    if(r.escalate && e > m_o.target_symmetry_error && r.total_projections < m_s.maximum_constrained_steps &&
+       (slow || r.projections >= m_s.projection_iterations) && m_constrained_ratio < m_s.maximum_constrained_ratio) {
+      m_constrained_ratio = (std::min)(m_s.maximum_constrained_ratio, m_constrained_ratio * 10);
       r.projections = 1;
       r.previous_constrained = std::numeric_limits<double>::infinity();
       r.previous_exact = std::numeric_limits<double>::infinity();
       return false;
     }
-    return e <= m_o.symmetry_tolerance || r.projections >= m_o.projection_iterations || stalled ||
-           (r.escalate && (e <= m_o.target_error || r.total_projections >= m_o.maximum_constrained_steps));
+    return e <= m_o.symmetry_tolerance || r.projections >= m_s.projection_iterations || stalled ||
+           (r.escalate && (e <= m_o.target_symmetry_error || r.total_projections >= m_s.maximum_constrained_steps));
   }
 
   // The alphas of the steps before the constrained ones: from 0 to 1 on the coarsest level; the
@@ -384,7 +377,7 @@ private:
   std::vector<double> schedule(std::size_t level) const
   {
     // alpha / (1 - alpha) grows geometrically from 10^r0 to 10^r1.
-    const double r0 = -1.0, r1 = m_o.schedule_exponent;
+    const double r0 = -1.0, r1 = m_s.schedule_exponent;
     std::vector<double> a;
     const auto alpha_of = [](double r) { const double q = std::pow(10.0, r); return q / (1 + q); };
     if(level + 1 == m_levels.size()) {
@@ -438,7 +431,8 @@ private:
 
   bool refinable(const Level& level) const
   {
-    return m_o.refinement_steps > 0 && level.original.number_of_vertices() <= m_o.refinement_limit;
+    return m_o.target_symmetry_error > 0 && m_s.refinement_steps > 0 &&
+           level.original.number_of_vertices() <= m_s.refinement_limit;
   }
 
   // The isometric refinement of the finest level, after the constrained steps: while the error
@@ -447,7 +441,7 @@ private:
   // error are kept, and their mirror points are left in `out.mirrors`.
   void refine(const Level& level, std::vector<Vector_3d>& x, Symmetrization_output& out) const
   {
-    double rho = m_o.refinement_ratio;
+    double rho = m_s.refinement_ratio;
     std::vector<Vector_3d> best_x = x;
     double best_error = std::numeric_limits<double>::infinity();
     std::vector<std::vector<Mirror>> mirrors;
@@ -462,7 +456,7 @@ private:
         best_x = x;
         out.mirrors = mirrors;
         halvings = 0;
-      } else if(step < m_o.refinement_steps && halvings < 2) {
+      } else if(step < m_s.refinement_steps && halvings < 2) {
         // A step that made the error larger (the linearization does not hold that far): half of
         // it, from the best positions (one more search, no solve).
         ++halvings;
@@ -472,11 +466,11 @@ private:
         --step;
         continue;
       }
-      if(e <= m_o.target_error || step >= m_o.refinement_steps)
+      if(e <= m_o.target_symmetry_error || step >= m_s.refinement_steps)
         break;
       refine_step(level, mirrors, rho, x);
       out.iterations.push_back(Iteration_record{0, 1.0, 0.0});
-      rho = (std::min)(rho * std::sqrt(10.0), 1000 * m_o.refinement_ratio);
+      rho = (std::min)(rho * std::sqrt(10.0), 1000 * m_s.refinement_ratio);
     }
     x.swap(best_x);
   }
@@ -494,18 +488,18 @@ private:
     out.mirrors = mirrors;
     const Vertex_neighbours neighbours(level);
     std::vector<Vector_3d> best_x = x;
-    const double rho = 1000 * m_o.refinement_ratio;
-    const double threshold = 2 * m_o.target_error * m_diagonal;
-    for(std::size_t step = 0; step < m_o.local_refinement_steps && best_error > m_o.target_error; ++step) {
+    const double rho = 1000 * m_s.refinement_ratio;
+    const double threshold = 2 * m_o.target_symmetry_error * m_diagonal;
+    for(std::size_t step = 0; step < m_s.local_refinement_steps && best_error > m_o.target_symmetry_error; ++step) {
       const std::vector<std::uint32_t> unknown =
-        local_unknowns(level, neighbours, mirrors, threshold, m_o.local_refinement_rings);
+        local_unknowns(level, neighbours, mirrors, threshold, m_s.local_refinement_rings);
       if(unknown.empty())
         break;
       refine_step(level, mirrors, rho, x, &unknown);
       mirrors = exact_mirrors(level, x, &mirrors);
       const double e = rms_mirror_distance(mirrors, level.weights) / m_diagonal;
       out.iterations.push_back(Iteration_record{0, 1.0, e});
-      const bool gained = e < m_o.stall_ratio * best_error;
+      const bool gained = e < m_s.stall_ratio * best_error;
       if(e < best_error) {
         best_error = e;
         best_x = x;
@@ -551,7 +545,7 @@ private:
     c.edge = 1.0 / double((std::max)(std::size_t(1), level.edges.size()));
     c.eta = 0.01;
     c.displacement = 1e-4 / (double(n) * c.mean_edge * c.mean_edge); // mu = 1e-4
-    c.tangential_weight = m_o.tangential_weight;
+    c.tangential_weight = m_s.tangential_weight;
     Refinement_system system(*active, c);
     system.reserve(mirrors.size(), level);
     const std::vector<Vector_3d> fnormals = Surface{x, level.original.triangles}.face_normals();
@@ -562,12 +556,13 @@ private:
   }
 
   const Surface& m_input;
-  Symmetrization_options m_o;
+  Symmetrize_options m_o;
+  Symmetrizer_settings m_s;
   std::vector<Affine_3d> m_transforms, m_inverses;
   double m_diagonal = 1;
   std::vector<Level> m_levels;
   mutable Step_solver m_step;       // the last solve's factorization, kept
-  double m_constrained_ratio = 100; // alpha / (1 - alpha) of the current constrained steps
+  double m_constrained_ratio = 0;   // alpha / (1 - alpha) of the current constrained steps (run_level())
   double m_error_before = 0;        // RMS mirror distance of the input, relative to the diagonal
   std::vector<std::vector<Mirror>> m_input_mirrors; // the mirror points of the input
   double m_total_work = 0, m_done_work = 0;         // for progress: vertices times steps
