@@ -19,7 +19,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include <Shape_analysis_support/Urban_scene.h>
+#include <Shape_analysis_support/Urban_scan.h>
 #include <CGAL/Point_set_object_recognition/recognize_objects.h>
 #include <Shape_analysis_support/Json.h>
 

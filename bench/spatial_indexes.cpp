@@ -45,7 +45,7 @@
 #include <CGAL/Shape_analysis/internal/Point_tree.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Surface_index.h>
 #include <Shape_analysis_support/Json.h>
-#include <Shape_analysis_support/Urban_scene.h>
+#include <Shape_analysis_support/Urban_scan.h>
 #include "bench_util.h"
 
 #include <algorithm>
@@ -402,6 +402,15 @@ Json surface_comparisons(const std::string& file, int moves, int repeats)
   const double amplitude = 0.005 * diagonal(s.points), scale = diagonal(s.points);
   double own_update = 0, own_q = 0, cgal_rebuild = 0, cgal_q = 0;
   std::size_t bad = 0, total = 0;
+  // CGAL's side of a move: the mesh takes the new positions, the AABB tree is rebuilt (seconds).
+  const auto move_and_rebuild = [&](const std::vector<SAI::Vector_3d>& x) {
+    for(auto v : mesh.vertices())
+      mesh.point(v) = Point(x[std::size_t(v)].x, x[std::size_t(v)].y, x[std::size_t(v)].z);
+    const auto start = Clock::now();
+    tree.rebuild(faces(mesh).first, faces(mesh).second, mesh);
+    tree.accelerate_distance_queries();
+    return seconds_since(start);
+  };
   for(int step = 1; step <= moves; ++step) {
     const std::vector<SAI::Vector_3d> x = moved(s.points, amplitude, scale, step);
     const std::vector<SAI::Vector_3d> mq = mirrored(x);
@@ -411,12 +420,7 @@ Json surface_comparisons(const std::string& file, int moves, int repeats)
     t = Clock::now();
     own_queries(index, mq, own_d);
     own_q += seconds_since(t);
-    for(auto v : mesh.vertices())
-      mesh.point(v) = Point(x[std::size_t(v)].x, x[std::size_t(v)].y, x[std::size_t(v)].z);
-    t = Clock::now();
-    tree.rebuild(faces(mesh).first, faces(mesh).second, mesh);
-    tree.accelerate_distance_queries();
-    cgal_rebuild += seconds_since(t);
+    cgal_rebuild += move_and_rebuild(x);
     t = Clock::now();
     cgal_queries(tree, mq, cgal_d);
     cgal_q += seconds_since(t);
@@ -451,12 +455,7 @@ Json surface_comparisons(const std::string& file, int moves, int repeats)
       own_hint[i] = r.face;
     }
     own_q += seconds_since(t);
-    for(auto v : mesh.vertices())
-      mesh.point(v) = Point(x[std::size_t(v)].x, x[std::size_t(v)].y, x[std::size_t(v)].z);
-    t = Clock::now();
-    tree.rebuild(faces(mesh).first, faces(mesh).second, mesh);
-    tree.accelerate_distance_queries();
-    cgal_rebuild += seconds_since(t);
+    cgal_rebuild += move_and_rebuild(x);
     t = Clock::now();
     const bool hinted = !cgal_hint.empty();
     cgal_hint.resize(mq.size());

@@ -3,8 +3,8 @@
 
   check_layout.py rules   the library (include/) holds algorithms only, and nothing outside a
                           package includes that package's internal/ headers
-  check_layout.py sizes   no library header over FILE_LIMIT lines, no function in one over
-                          FUNCTION_LIMIT lines, except the ones listed in scripts/size_exceptions.txt
+  check_layout.py sizes   no file of include/, support/ or src/ over FILE_LIMIT lines, no library
+                          function over FUNCTION_LIMIT lines, except the ones listed in scripts/size_exceptions.txt
                           at no more than their recorded size (the list may only shrink); prints
                           the largest files and functions
   check_layout.py sizes --update   rewrites scripts/size_exceptions.txt from the tree
@@ -159,9 +159,12 @@ def functions(text):
 
 def measure():
     files, funcs = {}, {}
-    for path in files_under("include"):
+    # Files of the library, the support code and the tool; functions of the library.
+    for path in files_under("include") + files_under("support") + files_under("src"):
         text = read(path)
         files[path] = text.count("\n") + (0 if text.endswith("\n") else 1)
+        if not path.startswith("include"):
+            continue
         for name, first, length in functions(text):
             key = f"{path}:{name}"
             funcs[key] = max(funcs.get(key, 0), length)
@@ -184,7 +187,7 @@ def check_sizes(update):
     files, funcs = measure()
     over = {k: v for k, v in files.items() if v > FILE_LIMIT}
     over.update({k: v for k, v in funcs.items() if v > FUNCTION_LIMIT})
-    print(f"largest library headers (limit {FILE_LIMIT} lines):")
+    print(f"largest files of include/, support/ and src/ (limit {FILE_LIMIT} lines):")
     for path, size in sorted(files.items(), key=lambda kv: -kv[1])[:8]:
         print(f"  {size:5d}  {path}")
     print(f"longest functions in them (limit {FUNCTION_LIMIT} lines):")

@@ -15,7 +15,7 @@
 
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO/PLY.h>
-#include <Shape_analysis_support/Urban_scene.h>
+#include <Shape_analysis_support/Urban_scan.h>
 #include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/read_point_set.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>

@@ -2,7 +2,7 @@
 // object recognition package: determinism (seed, thread count), object classes and clutter,
 // points inside their objects' boxes, ground height, occlusion by buildings, point counts.
 
-#include <Shape_analysis_support/Urban_scene.h>
+#include <Shape_analysis_support/Urban_scan.h>
 
 #include <gtest/gtest.h>
 

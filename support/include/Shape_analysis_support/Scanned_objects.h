@@ -9,7 +9,7 @@
 // remaining point, the class of every object and the objects' true locations (their base on the
 // ground), restricted to the objects the scanner saw.
 
-#include <Shape_analysis_support/Urban_scene.h>
+#include <Shape_analysis_support/Urban_scan.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
 
 #include <array>
