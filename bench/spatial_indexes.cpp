@@ -1,9 +1,9 @@
 // Copyright (c) 2026 CGAL Global Shape Analysis contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-// The project's own spatial indexes against CGAL's, each on the workload where the project uses
-// it: seconds to build and to query (one thread), the ratio own / CGAL, and whether both give the
-// same answers (the same neighbour distances, the same closest-point distances).
+// The project's spatial indexes against CGAL's (or the standard library's), each on the workload
+// where the project uses it: seconds to build and to query (one thread), the ratio own / CGAL,
+// and whether both give the same answers. It is the reason each own index is kept (issue 22):
 //
 //   bench_spatial_indexes [--data DIR] [--street-points 400000] [--moves 5] [--repeats 3]
 //                        [--output FILE]
@@ -11,7 +11,11 @@
 //   - point_tree_knn_street: internal::Point_tree k_nearest(k + 1 = 9) for every node of a
 //     generated street (Urban_scene.h, voxel centroids in 0.2 m cells: the nodes of the
 //     segmentation graph of Nearest_nodes.h nearest_in_tree and of Localization.h) against
-//     CGAL::Orthogonal_k_neighbor_search on a Kd_tree (Search_traits_3, Sliding_midpoint);
+//     CGAL::Orthogonal_k_neighbor_search on a Kd_tree (Search_traits_3, Sliding_midpoint).
+//     Point_tree is that kd-tree behind the callers' interface (ids, distance bound, ties in the
+//     order given), so the ratio is the price of that interface;
+//   - key_map_street: the hash map of cells of the segmentation (Column_index.h Key_map) against
+//     std::unordered_map on the keys of the street's points;
 //   - cell_stack_knn_street: the same nodes, k = 8, with Nearest_nodes.h's Cell_stack_neighbors
 //     (the graph's default, graph_cell_size 0.2 m; bounded to 7 x 7 x 7 cells, so not exact by
 //     design: the report says how often and how far its k-th neighbour differs);
@@ -19,6 +23,11 @@
 //     samples of Coseg_correspondences.h);
 //   - point_tree_nearest_mesh: nearest() of the face centroids of camel.off at the vertices
 //     (Component_links.h, Similarity_alignment.h) against Orthogonal_k_neighbor_search with k = 1;
+//   - nearest_sample_tree_icp: the ICP's own tree (Nearest_sample_tree, Similarity_alignment.h)
+//     on every fifth vertex of camel.off, queried at every vertex ten times, against CGAL's
+//     kd-tree with k = 1;
+//   - distance_grid_far_points: Surface_mesh_symmetrization's Distance_grid dropping mirrored
+//     points far from the surface before the AABB tree is asked, against the AABB tree alone;
 //   - surface_index_closest: Surface_mesh_symmetrization's Surface_index::closest() (Bvh of the
 //     triangles) at every vertex of armadillo.off mirrored through the plane x = centre, against
 //     CGAL::AABB_tree of AABB_face_graph_triangle_primitive (with accelerate_distance_queries());
@@ -41,8 +50,11 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <CGAL/Point_set_object_recognition/internal/Column_index.h>
 #include <CGAL/Point_set_object_recognition/internal/Nearest_nodes.h>
+#include <CGAL/Shape_analysis/internal/Nearest_sample_tree.h>
 #include <CGAL/Shape_analysis/internal/Point_tree.h>
+#include <CGAL/Surface_mesh_symmetrization/internal/Distance_grid.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Surface_index.h>
 #include <Shape_analysis_support/Json.h>
 #include <Shape_analysis_support/Urban_scan.h>
@@ -56,6 +68,7 @@
 #include <iostream>
 #include <limits>
 #include <string>
+#include <random>
 #include <unordered_map>
 #include <vector>
 
@@ -118,6 +131,11 @@ Json knn_comparison(const std::vector<SAI::Vector_3d>& points, const std::vector
     t = Clock::now();
     std::vector<std::pair<double, std::uint32_t>> found;
     for(std::size_t q = 0; q < queries.size(); ++q) {
+      if(k == 1) { // nearest(), as Component_links.h and Similarity_alignment.h ask
+        std::uint32_t id = 0;
+        if(tree.nearest(queries[q], std::numeric_limits<double>::infinity(), id, own_d[q]))
+          continue;
+      }
       tree.k_nearest(queries[q], k, found);
       for(std::size_t r = 0; r < found.size(); ++r)
         own_d[q * k + r] = found[r].first;
@@ -155,10 +173,52 @@ Json knn_comparison(const std::vector<SAI::Vector_3d>& points, const std::vector
   return j;
 }
 
+// The nearest of a few thousand samples, asked again and again (the ICP of
+// Similarity_alignment.h, Closest_sample): Nearest_sample_tree against CGAL's kd-tree with k = 1,
+// both over the same points, every query asked `rounds` times (the ICP's iterations).
+Json nearest_sample_comparison(const std::vector<SAI::Vector_3d>& points, const std::vector<SAI::Vector_3d>& queries,
+                               int rounds, int repeats)
+{
+  std::vector<double> own_d(queries.size()), cgal_d(queries.size());
+  double own_build = 1e300, own_query = 1e300, cgal_build = 1e300, cgal_query = 1e300;
+  for(int repeat = 0; repeat < repeats; ++repeat) {
+    auto t = Clock::now();
+    const SAI::Nearest_sample_tree tree(points);
+    own_build = (std::min)(own_build, seconds_since(t));
+    t = Clock::now();
+    for(int round = 0; round < rounds; ++round)
+      for(std::size_t q = 0; q < queries.size(); ++q)
+        own_d[q] = (points[tree.nearest(queries[q])] - queries[q]).squared_length();
+    own_query = (std::min)(own_query, seconds_since(t));
+
+    t = Clock::now();
+    std::vector<Point> cp;
+    cp.reserve(points.size());
+    for(const auto& p : points)
+      cp.emplace_back(p.x, p.y, p.z);
+    Kd_tree kd(cp.begin(), cp.end());
+    kd.build();
+    cgal_build = (std::min)(cgal_build, seconds_since(t));
+    t = Clock::now();
+    for(int round = 0; round < rounds; ++round)
+      for(std::size_t q = 0; q < queries.size(); ++q) {
+        const Knn search(kd, Point(queries[q].x, queries[q].y, queries[q].z), 1);
+        cgal_d[q] = search.begin()->second;
+      }
+    cgal_query = (std::min)(cgal_query, seconds_since(t));
+  }
+  std::size_t unequal = 0;
+  for(std::size_t q = 0; q < queries.size(); ++q)
+    unequal += same(own_d[q], cgal_d[q]) ? 0 : 1;
+  Json j = comparison(own_build, own_query, cgal_build, cgal_query, queries.size() * std::size_t(rounds), unequal);
+  j["points"] = points.size();
+  return j;
+}
+
 // Voxel centroids of a generated street in cells of side `cell` (the nodes of the segmentation
 // graph).
 std::vector<SAI::Vector_3d> street_nodes(std::size_t target_points, double cell, std::size_t& scan_points,
-                                         std::vector<std::uint64_t>& cell_key)
+                                         std::vector<std::uint64_t>& cell_key, std::vector<std::uint64_t>& point_key)
 {
   SAS::Urban_scene_options o;
   o.target_points = target_points;
@@ -172,6 +232,7 @@ std::vector<SAI::Vector_3d> street_nodes(std::size_t target_points, double cell,
   for(const auto& p : scan.points) {
     const auto key = [&](double v, double off) { return std::uint64_t(std::int64_t(std::floor(v / cell)) + std::int64_t(off)) & 0x1FFFFF; };
     const std::uint64_t k = key(p.x, 1 << 20) | (key(p.y, 1 << 20) << 21) | (key(p.z, 1 << 20) << 42);
+    point_key.push_back(k);
     auto it = node_of.emplace(k, sum.size());
     if(it.second) {
       cell_key.push_back(k);
@@ -264,6 +325,57 @@ Json cell_stack_comparison(const std::vector<SAI::Vector_3d>& c, const std::vect
   // How far the k-th neighbour of the cells is, relative to the exact k-th (nodes with k found).
   j["own_kth_distance_over_exact_mean"] = n > short_rows ? ratio_sum / double(n - short_rows) : 0.0;
   j["own_kth_distance_over_exact_max"] = ratio_max;
+  return j;
+}
+
+// The cells of the street's points, as the segmentation graph numbers its nodes
+// (Segmentation_graph.h make_nodes(); Wall_detection.h, Column_index.h alike): Key_map against
+// std::unordered_map (reserved alike), every point's key inserted in scan order, then every key
+// looked up together with the key of the cell above (mostly absent).
+Json key_map_comparison(const std::vector<std::uint64_t>& keys, int repeats)
+{
+  namespace PI = CGAL::Point_set_object_recognition::internal;
+  const std::uint32_t none = PI::Key_map::none;
+  std::vector<std::uint32_t> own(2 * keys.size()), std_answers(2 * keys.size());
+  double own_build = 1e300, own_query = 1e300, std_build = 1e300, std_query = 1e300;
+  for(int repeat = 0; repeat < repeats; ++repeat) {
+    auto t = Clock::now();
+    PI::Key_map map(keys.size() / 4 + 16);
+    std::uint32_t n = 0;
+    for(std::uint64_t k : keys)
+      n += map.emplace(k, n).second ? 1 : 0;
+    own_build = (std::min)(own_build, seconds_since(t));
+    t = Clock::now();
+    for(std::size_t i = 0; i < keys.size(); ++i) {
+      own[2 * i] = map.find(keys[i]);
+      own[2 * i + 1] = map.find(keys[i] + (std::uint64_t(1) << 42));
+    }
+    own_query = (std::min)(own_query, seconds_since(t));
+
+    t = Clock::now();
+    std::unordered_map<std::uint64_t, std::uint32_t> umap;
+    umap.reserve(keys.size() / 4 + 16);
+    std::uint32_t m = 0;
+    for(std::uint64_t k : keys)
+      m += umap.emplace(k, m).second ? 1 : 0;
+    std_build = (std::min)(std_build, seconds_since(t));
+    t = Clock::now();
+    for(std::size_t i = 0; i < keys.size(); ++i) {
+      auto a = umap.find(keys[i]);
+      std_answers[2 * i] = a == umap.end() ? none : a->second;
+      auto b = umap.find(keys[i] + (std::uint64_t(1) << 42));
+      std_answers[2 * i + 1] = b == umap.end() ? none : b->second;
+    }
+    std_query = (std::min)(std_query, seconds_since(t));
+  }
+  std::size_t unequal = 0, absent = 0;
+  for(std::size_t i = 0; i < own.size(); ++i) {
+    unequal += own[i] != std_answers[i] ? 1 : 0;
+    absent += own[i] == none ? 1 : 0;
+  }
+  Json j = comparison(own_build, own_query, std_build, std_query, own.size(), unequal);
+  j["keys_inserted"] = keys.size();
+  j["absent_lookups"] = absent;
   return j;
 }
 
@@ -485,6 +597,65 @@ Json surface_comparisons(const std::string& file, int moves, int repeats)
   return out;
 }
 
+// The far-point test of the plane search (Plane_detection.h, approximate_closest_compatible()):
+// armadillo's face centroids (a twentieth of them per plane) mirrored through 20 random planes
+// through the centre; a point farther than the reach (5% of the bounding-box diagonal, the
+// refinement's smallest) from the surface is dropped. Own: Distance_grid::lower_bound() drops what it can, CGAL's AABB tree
+// answers the rest; CGAL alone: the AABB tree's closest point for every point. The two must keep
+// the same points ("unequal_answers"); the tree is built outside both timings.
+Json distance_grid_comparison(const Mesh& m, const SYI::Surface& s, int repeats)
+{
+  const std::vector<SAI::Vector_3d> centroids = face_centroids(s);
+  SAI::Vector_3d centre(0.0);
+  for(const auto& p : s.points)
+    centre = centre + p;
+  centre = centre / double(s.points.size());
+  const double reach = 0.05 * diagonal(s.points);
+  std::vector<SAI::Vector_3d> queries;
+  std::mt19937 rng(11);
+  std::normal_distribution<double> gauss;
+  for(int plane = 0; plane < 20; ++plane) {
+    SAI::Vector_3d n(gauss(rng), gauss(rng), gauss(rng));
+    n = n / n.length();
+    for(std::size_t f = std::size_t(plane); f < centroids.size(); f += 20) // a twentieth each
+      queries.push_back(centroids[f] - n * (2 * SAI::dot(centroids[f] - centre, n)));
+  }
+  Aabb_tree tree(faces(m).first, faces(m).second, m);
+  tree.accelerate_distance_queries();
+  std::vector<char> own_near(queries.size()), cgal_near(queries.size());
+  double own_build = 1e300, own_query = 1e300, cgal_query = 1e300;
+  std::size_t dropped = 0;
+  for(int repeat = 0; repeat < repeats; ++repeat) {
+    auto t = Clock::now();
+    const SYI::Distance_grid grid(s);
+    own_build = (std::min)(own_build, seconds_since(t));
+    t = Clock::now();
+    dropped = 0;
+    for(std::size_t q = 0; q < queries.size(); ++q) {
+      if(grid.lower_bound(queries[q]) > reach) {
+        own_near[q] = 0, ++dropped;
+        continue;
+      }
+      const Point p(queries[q].x, queries[q].y, queries[q].z);
+      own_near[q] = CGAL::squared_distance(p, tree.closest_point(p)) < reach * reach;
+    }
+    own_query = (std::min)(own_query, seconds_since(t));
+    t = Clock::now();
+    for(std::size_t q = 0; q < queries.size(); ++q) {
+      const Point p(queries[q].x, queries[q].y, queries[q].z);
+      cgal_near[q] = CGAL::squared_distance(p, tree.closest_point(p)) < reach * reach;
+    }
+    cgal_query = (std::min)(cgal_query, seconds_since(t));
+  }
+  std::size_t unequal = 0;
+  for(std::size_t q = 0; q < queries.size(); ++q)
+    unequal += own_near[q] != cgal_near[q] ? 1 : 0;
+  Json j = comparison(own_build, own_query, 0.0, cgal_query, queries.size(), unequal);
+  j["dropped_by_the_grid"] = dropped;
+  j["reach_over_diagonal"] = 0.05;
+  return j;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -516,8 +687,8 @@ int main(int argc, char** argv)
 
   std::cerr << "street of " << street_points << " points...\n";
   std::size_t scan_points = 0;
-  std::vector<std::uint64_t> cell_key;
-  const std::vector<SAI::Vector_3d> nodes = street_nodes(street_points, 0.2, scan_points, cell_key);
+  std::vector<std::uint64_t> cell_key, point_key;
+  const std::vector<SAI::Vector_3d> nodes = street_nodes(street_points, 0.2, scan_points, cell_key, point_key);
   report["point_tree_knn_street"] = knn_comparison(nodes, nodes, 9, repeats);
   report["point_tree_knn_street"]["scan_points"] = scan_points;
   report["point_tree_knn_street"]["own_index"] = "Shape_analysis::internal::Point_tree::k_nearest";
@@ -525,6 +696,9 @@ int main(int argc, char** argv)
   report["cell_stack_knn_street"] = cell_stack_comparison(nodes, cell_key, 8, repeats);
   report["cell_stack_knn_street"]["own_index"] = "Point_set_object_recognition::internal::Cell_stack_neighbors (Column_index)";
   report["cell_stack_knn_street"]["cgal_index"] = "Orthogonal_k_neighbor_search (k + 1, self dropped)";
+  report["key_map_street"] = key_map_comparison(point_key, repeats);
+  report["key_map_street"]["own_index"] = "Point_set_object_recognition::internal::Key_map";
+  report["key_map_street"]["cgal_index"] = "std::unordered_map (CGAL has no hash map of cells; the ratio is own / std)";
 
   std::cerr << "meshes...\n";
   {
@@ -544,8 +718,26 @@ int main(int argc, char** argv)
       const SYI::Surface s = to_surface(m);
       report["point_tree_nearest_mesh"] = knn_comparison(face_centroids(s), s.points, 1, repeats);
       report["point_tree_nearest_mesh"]["mesh"] = "camel.off: face centroids, queried at the vertices";
+      std::vector<SAI::Vector_3d> samples;
+      for(std::size_t v = 0; v < s.points.size(); v += 5)
+        samples.push_back(s.points[v]);
+      report["nearest_sample_tree_icp"] = nearest_sample_comparison(samples, s.points, 10, repeats);
+      report["nearest_sample_tree_icp"]["mesh"] = "camel.off: every fifth vertex, queried at every vertex 10 times";
+      report["nearest_sample_tree_icp"]["own_index"] = "Shape_analysis::internal::Nearest_sample_tree::nearest";
+      report["nearest_sample_tree_icp"]["cgal_index"] = "Orthogonal_k_neighbor_search, k = 1";
     } else
       report["point_tree_nearest_mesh"]["skipped"] = "cannot read " + f;
+  }
+
+  {
+    Mesh m;
+    const std::string f = data + "/armadillo.off";
+    if(CGAL::IO::read_polygon_mesh(f, m) && !m.is_empty()) {
+      report["distance_grid_far_points"] = distance_grid_comparison(m, to_surface(m), repeats);
+      report["distance_grid_far_points"]["own_index"] = "Surface_mesh_symmetrization::internal::Distance_grid, then the AABB tree";
+      report["distance_grid_far_points"]["cgal_index"] = "AABB_tree closest_point() alone";
+    } else
+      report["distance_grid_far_points"]["skipped"] = "cannot read " + f;
   }
 
   std::cerr << "closest points...\n";

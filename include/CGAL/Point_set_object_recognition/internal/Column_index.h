@@ -39,7 +39,8 @@ inline bool horizontally_within(const P3& a, const P3& b, double radius)
 }
 
 // A hash map from 64-bit keys (never all ones) to 32-bit values, by open addressing with linear
-// probing: the grids of the segmentation look up millions of keys, most of them absent.
+// probing: the grids of the segmentation look up millions of keys, most of them absent (0.52 of
+// the time of std::unordered_map on a street's cells: bench/spatial_indexes.cpp, key_map_street).
 class Key_map
 {
 public:

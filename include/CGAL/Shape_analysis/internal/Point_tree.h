@@ -4,14 +4,27 @@
 #ifndef CGAL_SHAPE_ANALYSIS_INTERNAL_POINT_TREE_H
 #define CGAL_SHAPE_ANALYSIS_INTERNAL_POINT_TREE_H
 
-// A small static kd-tree over indexed 3D points (double), for the nearest-neighbour queries of
-// the graph machinery (component links). Built once, queried many times; no allocation per query.
+// The nearest-neighbour queries of the graph machinery (component links, surface samples, the
+// nodes of the point-cloud segmentation graph) on CGAL's kd-tree (Spatial_searching: Kd_tree with
+// the sliding-midpoint splitter, Orthogonal_k_neighbor_search), behind the small interface the
+// callers use: caller's ids, a distance bound, and the answers of a scan in the order given where
+// the kd-tree leaves ties open (among points at the same distance, the ones given first).
+// bench/spatial_indexes.cpp measures this against CGAL's kd-tree used directly.
 
 #include <CGAL/Shape_analysis/internal/Vector_3d.h>
+
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/property_map.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -19,182 +32,164 @@ namespace CGAL {
 namespace Shape_analysis {
 namespace internal {
 
-// Offers `c` to `heap`, a max-heap that keeps the (at most) k smallest values offered.
-template <typename T>
-void keep_k_smallest(std::vector<T>& heap, std::size_t k, const T& c)
-{
-  if(heap.size() < k) {
-    heap.push_back(c);
-    std::push_heap(heap.begin(), heap.end());
-  } else if(k > 0 && c < heap.front()) {
-    std::pop_heap(heap.begin(), heap.end());
-    heap.back() = c;
-    std::push_heap(heap.begin(), heap.end());
-  }
-}
-
 class Point_tree
 {
+  typedef CGAL::Simple_cartesian<double> Kernel;
+  typedef Kernel::Point_3 Point;
+
+  // The kd-tree holds each distinct point once, with its number among the distinct points, in
+  // its own arrays (a query then reads no other array: with positions alone it read 2.5 times
+  // slower). Copies of a point are common (the samples of faces meeting at a vertex, up to
+  // thousands at a fan's centre) and would make a tie of thousands for the kd-tree to sort out.
+  typedef std::pair<Point, std::uint32_t> Entry;
+  typedef CGAL::First_of_pair_property_map<Entry> Point_map;
+  typedef CGAL::Search_traits_3<Kernel> Base_traits;
+  typedef CGAL::Search_traits_adapter<Entry, Point_map, Base_traits> Traits;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
+  typedef Search::Tree Tree;
+  typedef Search::Distance Distance;
+
+  struct Data
+  {
+    std::vector<Vector_3d> points;         // per distinct point
+    std::vector<std::uint32_t> first_copy; // per distinct point, its copies' positions in
+    std::vector<std::uint32_t> copies;     // copies[first_copy[i], first_copy[i + 1]), increasing
+    std::vector<std::uint32_t> ids;        // per position, the caller's id
+    std::unique_ptr<Tree> tree;
+  };
+
 public:
+  typedef std::pair<double, std::uint32_t> Candidate; // squared distance, id (or position)
+
   Point_tree() = default;
 
   // `ids[k]` is the caller's id of point `points[k]`.
   Point_tree(const std::vector<Vector_3d>& points, const std::vector<std::uint32_t>& ids)
-    : m_points(points), m_ids(ids)
   {
-    m_order.resize(points.size());
+    if(points.empty())
+      return;
+    auto d = std::make_shared<Data>();
+    d->ids = ids;
+    struct Keyed // coordinates and position, sorted in one array
+    {
+      double x, y, z;
+      std::uint32_t i;
+      bool operator<(const Keyed& o) const { return std::tie(x, y, z, i) < std::tie(o.x, o.y, o.z, o.i); }
+    };
+    std::vector<Keyed> sorted(points.size());
     for(std::size_t i = 0; i < points.size(); ++i)
-      m_order[i] = static_cast<std::uint32_t>(i);
-    if(!points.empty())
-      build(0, points.size(), 0);
+      sorted[i] = Keyed{points[i].x, points[i].y, points[i].z, std::uint32_t(i)};
+    std::sort(sorted.begin(), sorted.end());
+    // Distinct points numbered in the order of their first copies, so that the tree is built
+    // from the caller's order.
+    std::vector<std::uint32_t> distinct_of(points.size());
+    std::vector<std::uint32_t> firsts;
+    for(std::size_t j = 0; j < sorted.size(); ++j) {
+      const bool same = j > 0 && sorted[j].x == sorted[j - 1].x && sorted[j].y == sorted[j - 1].y &&
+                        sorted[j].z == sorted[j - 1].z;
+      if(!same)
+        firsts.push_back(sorted[j].i);
+      distinct_of[sorted[j].i] = std::uint32_t(firsts.size() - 1);
+    }
+    std::vector<std::uint32_t> rank(firsts.size()); // sorted number -> number in caller's order
+    std::vector<std::uint32_t> by_first(firsts.size());
+    for(std::size_t i = 0; i < by_first.size(); ++i)
+      by_first[i] = std::uint32_t(i);
+    if(firsts.size() < points.size())
+      std::sort(by_first.begin(), by_first.end(), [&](std::uint32_t a, std::uint32_t b) { return firsts[a] < firsts[b]; });
+    else // no copies: the caller's order
+      for(std::size_t i = 0; i < by_first.size(); ++i)
+        by_first[i] = distinct_of[i];
+    for(std::size_t i = 0; i < by_first.size(); ++i)
+      rank[by_first[i]] = std::uint32_t(i);
+    d->first_copy.assign(firsts.size() + 1, 0);
+    for(std::size_t i = 0; i < points.size(); ++i)
+      ++d->first_copy[rank[distinct_of[i]] + 1];
+    for(std::size_t i = 0; i < firsts.size(); ++i)
+      d->first_copy[i + 1] += d->first_copy[i];
+    d->copies.resize(points.size());
+    std::vector<std::uint32_t> fill(d->first_copy.begin(), d->first_copy.end() - 1);
+    for(std::size_t i = 0; i < points.size(); ++i) // increasing positions per distinct point
+      d->copies[fill[rank[distinct_of[i]]]++] = std::uint32_t(i);
+    std::vector<Entry> entries;
+    entries.reserve(firsts.size());
+    d->points.reserve(firsts.size());
+    for(std::size_t i = 0; i < by_first.size(); ++i) {
+      const Vector_3d& p = points[firsts[by_first[i]]];
+      d->points.push_back(p);
+      entries.emplace_back(Point(p.x, p.y, p.z), std::uint32_t(i));
+    }
+    d->tree.reset(new Tree(entries.begin(), entries.end()));
+    d->tree->build();
+    m_data = std::move(d);
   }
 
-  bool empty() const { return m_points.empty(); }
+  bool empty() const { return !m_data; }
 
-  // The id of the nearest point to `q` closer than sqrt(max_squared_distance), and its squared
-  // distance; returns false when there is none.
+  // The id of the nearest point to `q` at most sqrt(max_squared_distance) away (the first given
+  // among equally near ones), and its squared distance; returns false when there is none.
   bool nearest(const Vector_3d& q, double max_squared_distance, std::uint32_t& id,
                double& squared_distance) const
   {
-    if(m_points.empty())
+    if(!m_data)
       return false;
-    double best = max_squared_distance;
-    std::uint32_t best_k = (std::numeric_limits<std::uint32_t>::max)();
-    Vector_3d offset(0.0);
-    search(0, m_points.size(), 0, q, best, best_k, offset, 0.0);
-    if(best_k == (std::numeric_limits<std::uint32_t>::max)())
+    std::vector<Candidate> found;
+    nearest_positions(q, 1, found);
+    if(found.empty() || found.front().first > max_squared_distance)
       return false;
-    id = m_ids[best_k];
-    squared_distance = best;
+    id = m_data->ids[found.front().second];
+    squared_distance = found.front().first;
     return true;
   }
 
   // The ids of the (at most) `k` nearest points to `q` closer than sqrt(max_squared_distance)
-  // (every point by default), nearest first, with their squared distances, in `result` (cleared
-  // first).
-  void k_nearest(const Vector_3d& q, std::size_t k,
-                 std::vector<std::pair<double, std::uint32_t>>& result,
+  // (every point by default), nearest first (equally near ones in the order given), with their
+  // squared distances, in `result` (cleared first).
+  void k_nearest(const Vector_3d& q, std::size_t k, std::vector<Candidate>& result,
                  double max_squared_distance = std::numeric_limits<double>::infinity()) const
   {
     result.clear();
-    if(m_points.empty() || k == 0)
+    if(!m_data || k == 0)
       return;
-    Vector_3d offset(0.0);
-    search_k(0, m_points.size(), 0, q, k, result, offset, 0.0, max_squared_distance);
-    if(max_squared_distance < std::numeric_limits<double>::infinity())
-      result.erase(std::remove_if(result.begin(), result.end(),
-                                  [&](const std::pair<double, std::uint32_t>& r) {
-                                    return !(r.first < max_squared_distance);
-                                  }),
-                   result.end());
-    std::sort(result.begin(), result.end());
-    for(auto& r : result)
-      r.second = m_ids[r.second];
+    nearest_positions(q, k, result);
+    while(!result.empty() && !(result.back().first < max_squared_distance))
+      result.pop_back();
+    for(Candidate& r : result)
+      r.second = m_data->ids[r.second];
   }
 
 private:
-  // `heap` is a max-heap on (squared distance, position) of the best candidates so far. `offset`
-  // holds, per axis, how far q lies outside the current cell (0 inside) and `cell_distance` the
-  // squared length of `offset`: a lower bound of the squared distance to any point of the cell
-  // (incremental distance, as in Arya and Mount's ANN), so that a cell is skipped whenever it
-  // cannot hold a closer point.
-  void search_k(std::size_t begin, std::size_t end, int depth, const Vector_3d& q, std::size_t k,
-                std::vector<std::pair<double, std::uint32_t>>& heap, Vector_3d& offset,
-                double cell_distance, double max_squared_distance) const
+  // The k smallest (squared distance, position) pairs, in increasing order. The kd-tree returns
+  // the nearest distinct points, but which of several tied at the farthest distance is its
+  // choice: every point nearer than the farthest returned is known, so the answer holds when k
+  // of them are; otherwise the search is widened.
+  void nearest_positions(const Vector_3d& q, std::size_t k, std::vector<Candidate>& out) const
   {
-    if(!(cell_distance < max_squared_distance))
-      return;
-    auto offer = [&](std::uint32_t position) {
-      keep_k_smallest(heap, k, std::pair<double, std::uint32_t>((m_points[position] - q).squared_length(), position));
-    };
-    if(end - begin <= leaf_size) {
-      for(std::size_t i = begin; i < end; ++i)
-        offer(m_order[i]);
-      return;
+    const Data& d = *m_data;
+    const std::size_t n = d.points.size();
+    const Point query(q.x, q.y, q.z);
+    std::size_t wanted = (std::min)(k + 1, n);
+    for(;;) {
+      out.clear();
+      double farthest = 0;
+      const Search search(*d.tree, query, unsigned(wanted), 0.0, true, Distance(), false);
+      for(auto it = search.begin(); it != search.end(); ++it) {
+        const std::uint32_t i = it->first.second;
+        const double dist = (d.points[i] - q).squared_length();
+        farthest = (std::max)(farthest, dist);
+        for(std::uint32_t c = d.first_copy[i]; c < d.first_copy[i + 1]; ++c)
+          out.emplace_back(dist, d.copies[c]);
+      }
+      std::sort(out.begin(), out.end());
+      if(wanted == n || (out.size() > k && out[k - 1].first < farthest))
+        break;
+      wanted = (std::min)(2 * wanted, n);
     }
-    const int axis = depth % 3;
-    const std::size_t mid = (begin + end) / 2;
-    const std::uint32_t position = m_order[mid];
-    offer(position);
-    const double diff = q[axis] - m_points[position][axis];
-    const bool left_first = diff < 0;
-    if(left_first)
-      search_k(begin, mid, depth + 1, q, k, heap, offset, cell_distance, max_squared_distance);
-    else
-      search_k(mid + 1, end, depth + 1, q, k, heap, offset, cell_distance, max_squared_distance);
-    const double old = offset[axis];
-    const double far_distance = cell_distance - old * old + diff * diff;
-    if(heap.size() < k || far_distance <= heap.front().first) {
-      offset[axis] = diff;
-      if(left_first)
-        search_k(mid + 1, end, depth + 1, q, k, heap, offset, far_distance, max_squared_distance);
-      else
-        search_k(begin, mid, depth + 1, q, k, heap, offset, far_distance, max_squared_distance);
-      offset[axis] = old;
-    }
+    if(out.size() > k)
+      out.resize(k);
   }
 
-  void build(std::size_t begin, std::size_t end, int depth)
-  {
-    if(end - begin <= leaf_size)
-      return;
-    const int axis = depth % 3;
-    const std::size_t mid = (begin + end) / 2;
-    std::nth_element(m_order.begin() + begin, m_order.begin() + mid, m_order.begin() + end,
-                     [&](std::uint32_t a, std::uint32_t b) {
-                       return m_points[a][axis] < m_points[b][axis];
-                     });
-    build(begin, mid, depth + 1);
-    build(mid + 1, end, depth + 1);
-  }
-
-  // Nearest point, with the same incremental cell distance as `search_k()`.
-  void search(std::size_t begin, std::size_t end, int depth, const Vector_3d& q, double& best,
-              std::uint32_t& best_k, Vector_3d& offset, double cell_distance) const
-  {
-    if(end - begin <= leaf_size) {
-      for(std::size_t i = begin; i < end; ++i) {
-        const std::uint32_t k = m_order[i];
-        const double d = (m_points[k] - q).squared_length();
-        if(d < best || (d == best && k < best_k)) {
-          best = d;
-          best_k = k;
-        }
-      }
-      return;
-    }
-    const int axis = depth % 3;
-    const std::size_t mid = (begin + end) / 2;
-    const std::uint32_t k = m_order[mid];
-    const double diff = q[axis] - m_points[k][axis];
-    const double d = (m_points[k] - q).squared_length();
-    if(d < best || (d == best && k < best_k)) {
-      best = d;
-      best_k = k;
-    }
-    const double old = offset[axis];
-    const double far_distance = cell_distance - old * old + diff * diff;
-    if(diff < 0) {
-      search(begin, mid, depth + 1, q, best, best_k, offset, cell_distance);
-      if(far_distance <= best) {
-        offset[axis] = diff;
-        search(mid + 1, end, depth + 1, q, best, best_k, offset, far_distance);
-        offset[axis] = old;
-      }
-    } else {
-      search(mid + 1, end, depth + 1, q, best, best_k, offset, cell_distance);
-      if(far_distance <= best) {
-        offset[axis] = diff;
-        search(begin, mid, depth + 1, q, best, best_k, offset, far_distance);
-        offset[axis] = old;
-      }
-    }
-  }
-
-  static constexpr std::size_t leaf_size = 8;
-  std::vector<Vector_3d> m_points;
-  std::vector<std::uint32_t> m_ids;
-  std::vector<std::uint32_t> m_order;
+  std::shared_ptr<const Data> m_data; // shared by copies (never changed once built)
 };
 
 } // namespace internal

@@ -27,7 +27,7 @@
 // similarity of point pairs) is in Similarity_transform.h.
 
 #include <CGAL/Shape_analysis/internal/Parallel.h>
-#include <CGAL/Shape_analysis/internal/Point_tree.h>
+#include <CGAL/Shape_analysis/internal/Nearest_sample_tree.h>
 #include <CGAL/Shape_analysis/internal/Similarity_transform.h>
 #include <CGAL/Shape_analysis/internal/Vector_3d.h>
 
@@ -60,7 +60,7 @@ class Closest_sample
 public:
   Closest_sample() = default;
   explicit Closest_sample(const std::vector<Vector_3d>& points)
-    : m_points(points), m_tree(points, iota(points.size()))
+    : m_points(points), m_tree(points)
   {}
 
   bool empty() const { return m_points.empty(); }
@@ -71,22 +71,12 @@ public:
   Vector_3d operator()(const Vector_3d& q, Vector_3d* normal = nullptr) const
   {
     (void)normal;
-    std::uint32_t id = 0;
-    double d2 = std::numeric_limits<double>::infinity();
-    m_tree.nearest(q, std::numeric_limits<double>::infinity(), id, d2);
-    return m_points[id];
+    return m_points[m_tree.nearest(q)];
   }
 
 private:
-  static std::vector<std::uint32_t> iota(std::size_t n)
-  {
-    std::vector<std::uint32_t> ids(n);
-    std::iota(ids.begin(), ids.end(), std::uint32_t(0));
-    return ids;
-  }
-
   std::vector<Vector_3d> m_points;
-  Point_tree m_tree;
+  Nearest_sample_tree m_tree;
 };
 
 // The closest point of a triangulated surface (triangles of zero area are left out). Queries are

@@ -21,7 +21,9 @@ namespace internal {
 // from it: a grid over the bounding box (plus a margin), about 64 cells along its longest side;
 // the cells the surface crosses are found by sampling every triangle at half the cell size; the
 // other cells get a chamfer distance (26 neighbours, weights 1, sqrt 2, sqrt 3, two passes) to
-// the nearest crossed cell.
+// the nearest crossed cell. On the plane search's mirrored points it drops half of them and the
+// far-point test takes 0.56 of the time of CGAL's AABB tree alone (bench/spatial_indexes.cpp,
+// distance_grid_far_points).
 class Distance_grid
 {
 public:
