@@ -580,7 +580,7 @@ void add_points_segment_commands(CLI::App* points, std::function<int()>& run)
                       "The locations (.csv: a header line x,y,z, then one location per line; an empty z is the "
                       "ground's height)")
     ->required();
-  segment->add_option("--method", s->method, "mincut-auto (radius 1-5 m chosen per object), mincut, cc or all")
+  segment->add_option("--method", s->method, "mincut-auto (radius 1-7 m chosen per object), mincut, cc or all")
     ->capture_default_str()
     ->check(CLI::IsMember({"mincut-auto", "mincut", "cc", "all"}));
   segment->add_option("--radius", s->segmentation.background_radius, "Background radius of mincut, radius of cc and all (m)")
@@ -618,7 +618,7 @@ void add_points_segment_commands(CLI::App* points, std::function<int()>& run)
   recognize->add_option("--method", g->method, "Localization: nc, cc, meanshift or image")
     ->capture_default_str()
     ->check(CLI::IsMember({"nc", "cc", "meanshift", "image"}));
-  recognize->add_option("--segmentation", g->segmentation, "mincut-auto (radius 1-5 m chosen per object), mincut, cc or all")
+  recognize->add_option("--segmentation", g->segmentation, "mincut-auto (radius 1-7 m chosen per object), mincut, cc or all")
     ->capture_default_str()
     ->check(CLI::IsMember({"mincut-auto", "mincut", "cc", "all"}));
   recognize->add_option("--radius", ro.background_radius, "Background radius of mincut, radius of cc and all (m)")

@@ -23,7 +23,7 @@ enum class Segmentation_method {
   ALL_WITHIN_RADIUS,       ///< every point within `background_radius` (horizontally) of the location
   CONNECTED_COMPONENTS,    ///< the points within `background_radius` connected to the hard foreground (voxels of `component_spacing`)
   MIN_CUT,                 ///< the minimum cut with the background radius `background_radius`
-  MIN_CUT_AUTOMATIC_RADIUS ///< the minimum cut with a background radius of 1, 2, 3, 4 or 5 m chosen per object
+  MIN_CUT_AUTOMATIC_RADIUS ///< the minimum cut with a background radius of 1 to 7 m chosen per object
 };
 
 /*!

@@ -161,11 +161,15 @@ inline void fit_cell_ground(const std::vector<std::array<double, 3>>& p, const B
   std::array<double, 3> plane{{0, 0, zs[q]}};
   bool fitted = false;
   const double cx = xa + 0.5 * o.ground_cell_size, cy = ya + 0.5 * o.ground_cell_size;
+  // Above the plane, the band stops at 0.3 m: the lowest points of a car or a bench, 0.3 to 1 m
+  // above the road, lifted the ground of vehicle scans by 0.5 to 1.8 m, and the object with it
+  // (bench/real_scans.cpp).
+  const double above = 0.3;
   for(double band : {1.0, 0.5, 0.3, 0.2}) {
     buffers.near.clear();
     for(std::size_t i : lowest) {
       const double d = p[i][2] - (plane[0] * p[i][0] + plane[1] * p[i][1] + plane[2]);
-      if(d > -band && d < band)
+      if(d > -band && d < (std::min)(band, above))
         buffers.near.push_back(i);
     }
     std::array<double, 3> next;
@@ -375,7 +379,8 @@ that what remains are candidate parts of small objects:
    In each cell, only the lowest point of each of its \f$16 \times 16\f$ columns takes part (so
    that the foot of a wall or an object does not lift the plane towards it): a plane starts level
    at the 5th percentile of their heights and is refitted by
-   least squares to the points within a band around it, the band shrinking from 1 m to 0.2 m. A
+   least squares to the points within a band around it, the band shrinking from 1 m to 0.2 m below
+   it and at most 0.3 m above it (so that the low parts of a car do not lift it). A
    cell whose points near that plane do not spread over it (the foot of a wall seen from the
    street, a lone object), whose ground rises above another cell's within 20 m by more than 1 m
    plus 30% of their distance (a roof), or that is empty takes the ground of its neighbours. The ground height is blended

@@ -193,11 +193,11 @@ described below (`foreground_height`: the thesis' 1.2 m). By `segmentation_metho
   `maximum_graph_size` nodes, it is contracted first (nodes joined by their heaviest edge are
   merged, round after round, until about that many remain), which bounds the time per object.
 - `Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS`: the same cut with
-  \f$ R \f$ = 1, 2, 3, 4, 5 m in turn, keeping the first whose foreground has more than
+  \f$ R \f$ = 1, 2, ..., 7 m in turn, keeping the first whose foreground has more than
   `minimum_foreground_size` points and a cut cost (see `Object_segmentation::cut_cost`)
   under `maximum_cut_cost`. When none qualifies, the smallest radius whose foreground is
   big enough is kept (a larger one without a clean cut only takes more of what the object
-  touches), else 5 m.
+  touches), else 7 m.
 
 The hard foreground is the point nearest to the vertical segment from the location up to
 `foreground_height` (the thesis takes the point nearest to the segment's top; the segment keeps an

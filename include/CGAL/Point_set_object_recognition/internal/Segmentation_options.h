@@ -27,8 +27,9 @@ constexpr double outer_factor = 10.0;
 constexpr double ramp_width = 1.0;
 // With cells, the nodes nearest to the seed's node that are also in the hard foreground.
 constexpr std::size_t seed_neighbors = 3;
-// The background radii that the automatic radius tries, increasing (metres).
-constexpr std::array<double, 5> automatic_radii{{1, 2, 3, 4, 5}};
+// The background radii that the automatic radius tries, increasing (metres): up to 7 m, so
+// that a bus or a truck (10-12 m long, seen from its middle) finds a clean cut.
+constexpr std::array<double, 7> automatic_radii{{1, 2, 3, 4, 5, 6, 7}};
 // Walls (facades): points of the columns of side `wall_column_side` that span more than
 // `wall_column_height` of height, within `wall_line_tolerance` of the line fitted to the high
 // points of such columns around when that line is long and thin (a pole or a tree is not). They
