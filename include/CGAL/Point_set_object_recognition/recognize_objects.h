@@ -421,7 +421,7 @@ bounding box (or on the grid through `tile_origin`). Each square that holds poin
 and keeps the locations that fall in it (a location over a square without points goes to the
 first neighbouring tile). An object across a border is then found by the tile that holds its
 location, with all its surroundings when the margin is wider than the object plus the reach of the
-segmentation (the largest background radius plus 2 m: 7 m for the automatic radius); since each
+segmentation (the largest background radius plus 2 m: 9 m for the automatic radius); since each
 tile locates objects in its own view, an object right at a border can still, rarely, be located
 on both sides or on neither. A point keeps the kind (`Point_kind`) that its own tile gives it,
 and an object keeps none of the points its own tiles find to be ground. The grids and graphs are
@@ -457,7 +457,7 @@ same relative order).
     \cgalParamDescription{the width of the band around a tile whose points it is processed with, in metres}
     \cgalParamType{`double`}
     \cgalParamDefault{`Recognize_objects_options::tile_margin`}
-    \cgalParamExtra{must be zero or positive; below the segmentation's reach (7 m), objects near a
+    \cgalParamExtra{must be zero or positive; below the segmentation's reach (9 m), objects near a
       border lose their surroundings; below the background removal's `maximum_component_extent`,
       a building that only pokes into the margin may be kept as foreground there (it
       does not change the tile's own points' kinds, only what its localization sees)}

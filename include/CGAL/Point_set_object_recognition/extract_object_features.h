@@ -1,0 +1,269 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_POINT_SET_OBJECT_RECOGNITION_EXTRACT_OBJECT_FEATURES_H
+#define CGAL_POINT_SET_OBJECT_RECOGNITION_EXTRACT_OBJECT_FEATURES_H
+
+/// \file extract_object_features.h
+/// Features of candidate objects, for their classification (thesis section 4.4.1): shape
+/// features of three segmentations of each object and a spin image around its location.
+
+#include <CGAL/Point_set_object_recognition/segment_objects.h>
+#include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/parameters.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Point_set_object_recognition {
+
+/// \ingroup PkgPointSetObjectRecognitionRef
+/// The options of `extract_object_features()`, one member per named parameter, initialized to its
+/// default (filled by `extract_object_features_options()`).
+struct Extract_object_features_options
+{
+  /// The radius of the spin image (metres): it covers the points within that distance of the
+  /// location's vertical axis, from the location up to twice that height. The thesis' 2 m.
+  double spin_image_radius = 2.0;
+};
+
+/// \ingroup PkgPointSetObjectRecognitionRef
+/// The features of a set of locations: one row per location, one column per feature.
+struct Object_features
+{
+  /// the names of the columns, e.g. `automatic.volume`, `spin.2.7` (see `extract_object_features()`)
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> values; ///< per location, its features in the order of `names`
+};
+
+/// \ingroup PkgPointSetObjectRecognitionRef
+/// The options that the named parameters `np` of `extract_object_features()` set, the others at
+/// their defaults.
+/// \tparam NamedParameters a sequence of named parameters
+/// \param np the named parameters of `extract_object_features()`
+/// \returns the options
+template <typename NamedParameters = parameters::Default_named_parameters>
+Extract_object_features_options extract_object_features_options(const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::Shape_analysis::internal::parameter_value;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  Extract_object_features_options o;
+  o.spin_image_radius = parameter_value(np, snp::spin_image_radius_tag, o.spin_image_radius);
+  return o;
+}
+
+namespace internal {
+
+// The spin image: 5 bins of radius / 5 from the axis, 10 of radius / 5 in height.
+constexpr int spin_radial_bins = 5, spin_height_bins = 10;
+// The side of the columns whose heights add up to the volume (metres).
+constexpr double volume_cell = 0.2;
+
+// The six shape features of the points `members` of an object based at `at`: their number, the
+// volume under them (columns of volume_cell along the principal horizontal directions from the
+// smallest coordinates, each from the base to its highest point), the mean and the standard deviation of their heights above the
+// base, and their standard deviations along the two principal horizontal directions (largest
+// first).
+inline std::array<double, 6> shape_features(const std::vector<P3>& p, const std::vector<std::size_t>& members,
+                                            const P3& at)
+{
+  std::array<double, 6> f{{double(members.size()), 0, 0, 0, 0, 0}};
+  if(members.empty())
+    return f;
+  double sum = 0, sum2 = 0, mx = 0, my = 0;
+  for(std::size_t i : members) {
+    const double h = p[i][2] - at[2];
+    sum += h, sum2 += h * h, mx += p[i][0], my += p[i][1];
+  }
+  const double n = double(members.size());
+  f[2] = sum / n;
+  f[3] = std::sqrt((std::max)(0.0, sum2 / n - f[2] * f[2]));
+  mx /= n, my /= n;
+  double cxx = 0, cxy = 0, cyy = 0;
+  for(std::size_t i : members) {
+    const double dx = p[i][0] - mx, dy = p[i][1] - my;
+    cxx += dx * dx, cxy += dx * dy, cyy += dy * dy;
+  }
+  cxx /= n, cxy /= n, cyy /= n;
+  const double mean = 0.5 * (cxx + cyy), spread = std::sqrt(0.25 * (cxx - cyy) * (cxx - cyy) + cxy * cxy);
+  f[4] = std::sqrt((std::max)(0.0, mean + spread));
+  f[5] = std::sqrt((std::max)(0.0, mean - spread));
+  // The major direction (angle of the covariance's first eigenvector), then columns along it.
+  const double angle = 0.5 * std::atan2(2 * cxy, cxx - cyy), ux = std::cos(angle), uy = std::sin(angle);
+  // The columns start at the smallest coordinates along those directions.
+  double u0 = std::numeric_limits<double>::infinity(), v0 = u0;
+  for(std::size_t i : members) {
+    const double dx = p[i][0] - mx, dy = p[i][1] - my;
+    u0 = (std::min)(u0, dx * ux + dy * uy), v0 = (std::min)(v0, dy * ux - dx * uy);
+  }
+  std::unordered_map<std::uint64_t, double> top; // column -> highest point above the base
+  const auto cell = [](double v) { return std::uint64_t(std::int64_t(v / volume_cell)); };
+  for(std::size_t i : members) {
+    const double dx = p[i][0] - mx, dy = p[i][1] - my;
+    const std::uint64_t key = cell(dx * ux + dy * uy - u0) | (cell(dy * ux - dx * uy - v0) << 32);
+    auto it = top.emplace(key, p[i][2] - at[2]).first;
+    it->second = (std::max)(it->second, p[i][2] - at[2]);
+  }
+  for(const auto& c : top)
+    f[1] += volume_cell * volume_cell * (std::max)(0.0, c.second);
+  return f;
+}
+
+// Points by horizontal cells of side `cell`, to gather those around a location.
+class Horizontal_cells
+{
+public:
+  Horizontal_cells(const std::vector<P3>& p, double cell) : m_cell(cell)
+  {
+    for(std::size_t i = 0; i < p.size(); ++i)
+      m_cells[key(index(p[i][0]), index(p[i][1]))].push_back(i);
+  }
+
+  // Calls f(i) for the points of the cells within `radius` of (x, y) (a superset of the points
+  // within it), cell by cell in a fixed order.
+  template <typename F>
+  void around(double x, double y, double radius, const F& f) const
+  {
+    for(std::int64_t a = index(x - radius); a <= index(x + radius); ++a)
+      for(std::int64_t b = index(y - radius); b <= index(y + radius); ++b) {
+        const auto it = m_cells.find(key(a, b));
+        if(it != m_cells.end())
+          for(std::size_t i : it->second)
+            f(i);
+      }
+  }
+
+private:
+  std::int64_t index(double v) const { return std::int64_t(std::floor(v / m_cell)); }
+  static std::uint64_t key(std::int64_t a, std::int64_t b)
+  {
+    return (std::uint64_t(a + (std::int64_t(1) << 31)) & 0xFFFFFFFFu) | (std::uint64_t(b + (std::int64_t(1) << 31)) << 32);
+  }
+  double m_cell;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> m_cells;
+};
+
+// The spin image of the points around `at` (axis vertical through it): the fraction of the
+// points of the cylinder (radius r, height 2 r above the base) in each of the bins, by distance
+// to the axis then by height; all 0 when the cylinder is empty.
+inline std::vector<double> spin_image(const std::vector<P3>& p, const Horizontal_cells& cells, const P3& at, double r)
+{
+  std::vector<double> image(std::size_t(spin_radial_bins * spin_height_bins), 0.0);
+  const double bin = r / spin_radial_bins;
+  double count = 0;
+  cells.around(at[0], at[1], r, [&](std::size_t i) {
+    const double a = std::hypot(p[i][0] - at[0], p[i][1] - at[1]), h = p[i][2] - at[2];
+    if(!(a < r) || h < 0 || !(h < 2 * r))
+      return;
+    const int ia = (std::min)(spin_radial_bins - 1, int(a / bin)), ih = (std::min)(spin_height_bins - 1, int(h / bin));
+    image[std::size_t(ia * spin_height_bins + ih)] += 1;
+    count += 1;
+  });
+  if(count > 0)
+    for(double& v : image)
+      v /= count;
+  return image;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+Computes the features of the objects at `locations` that `recognize_objects()` classifies
+(thesis section 4.4.1). Each location is the base of a candidate object (as for
+`segment_objects()`: its horizontal position and the ground height under it). Its row holds, in
+the order of `Object_features::names`:
+
+- for each of three segmentations of the object, six shape features: the number of points; the
+  volume under them (the points binned in vertical columns of 0.2 m along their principal
+  horizontal directions, each column from the base up to its highest point); the mean and the standard deviation of their heights above the base; the
+  standard deviations of their positions along the two principal horizontal directions, the
+  larger first. The segmentations, named by the prefix of their columns, are `automatic.` (the
+  one `segment_objects()` makes with the named parameters given, by default the minimum cut with
+  the automatic radius), `min_cut_4m.` (the minimum cut with a background radius of 4 m) and
+  `within_2m.` (every point within 2 m of the location, horizontally);
+- the spin image `spin.i.j` of the points around the location, about the vertical axis through
+  it: the fraction of the points within `spin_image_radius` of the axis and less than twice that
+  above the base whose distance to the axis falls in bin `i` (0 to 4) and whose height falls in
+  bin `j` (0 to 9), bins of a fifth of the radius.
+
+The features do not change when the scene is translated, nor, but for the binning of the volume
+(whose columns follow the principal directions), when it turns about a vertical axis. The shape
+features are 0 for an empty segmentation, the spin image 0 when no point lies around.
+
+\tparam PointRange a model of `ConstRange` whose iterator type is `RandomAccessIterator`
+\tparam LocationRange a range of `Object_location` or of `std::array<double, 3>`
+\tparam NamedParameters a sequence of named parameters
+\param points the points, without the ground (as for `segment_objects()`)
+\param locations the bases of the objects
+\param np the named parameters of `segment_objects()` (for the `automatic.` segmentation and,
+          but for the method and the radius, the two others), and:
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{spin_image_radius}
+    \cgalParamDescription{the radius of the spin image, in metres (its height is twice that)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`Extract_object_features_options::spin_image_radius`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the names of the features and one row per location, in the order of the locations
+
+\throws CGAL::Shape_analysis::Bad_input as `segment_objects()`, or if `spin_image_radius` is not
+        positive and finite
+*/
+template <typename PointRange, typename LocationRange, typename NamedParameters = parameters::Default_named_parameters>
+Object_features extract_object_features(const PointRange& points, const LocationRange& locations,
+                                        const NamedParameters& np = parameters::default_values())
+{
+  const Extract_object_features_options fo = extract_object_features_options(np);
+  if(!(fo.spin_image_radius > 0) || !std::isfinite(fo.spin_image_radius))
+    throw Bad_input("extract_object_features: spin_image_radius must be positive and finite");
+  const Segment_objects_options automatic = internal::checked_segmentation_options(np, "extract_object_features");
+  Segment_objects_options min_cut = automatic, within = automatic;
+  min_cut.segmentation_method = Segmentation_method::MIN_CUT;
+  min_cut.background_radius = 4.0;
+  within.segmentation_method = Segmentation_method::ALL_WITHIN_RADIUS;
+  within.background_radius = 2.0;
+  const std::vector<internal::P3> p = internal::point_arrays(points, np);
+  const std::vector<internal::P3> at = internal::location_positions(locations);
+  const std::array<std::pair<const char*, const Segment_objects_options*>, 3> kinds{
+      {{"automatic.", &automatic}, {"min_cut_4m.", &min_cut}, {"within_2m.", &within}}};
+  std::vector<Segmentation_result> segmentations;
+  for(const auto& k : kinds)
+    segmentations.push_back(internal::segment_objects(p, at, *k.second));
+
+  Object_features r;
+  const char* shape_names[] = {"points", "volume", "mean_height", "height_deviation", "major_deviation",
+                               "minor_deviation"};
+  for(const auto& k : kinds)
+    for(const char* name : shape_names)
+      r.names.push_back(std::string(k.first) + name);
+  for(int i = 0; i < internal::spin_radial_bins; ++i)
+    for(int j = 0; j < internal::spin_height_bins; ++j)
+      r.names.push_back("spin." + std::to_string(i) + "." + std::to_string(j));
+  const internal::Horizontal_cells cells(p, fo.spin_image_radius);
+  r.values.resize(at.size());
+  for(std::size_t l = 0; l < at.size(); ++l) {
+    std::vector<double>& row = r.values[l];
+    for(const Segmentation_result& s : segmentations) {
+      const std::array<double, 6> f = internal::shape_features(p, s.objects[l].points, at[l]);
+      row.insert(row.end(), f.begin(), f.end());
+    }
+    const std::vector<double> spin = internal::spin_image(p, cells, at[l], fo.spin_image_radius);
+    row.insert(row.end(), spin.begin(), spin.end());
+  }
+  return r;
+}
+
+} // namespace Point_set_object_recognition
+} // namespace CGAL
+
+#endif // CGAL_POINT_SET_OBJECT_RECOGNITION_EXTRACT_OBJECT_FEATURES_H
