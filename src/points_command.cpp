@@ -42,6 +42,7 @@ struct Scene_options
   std::string command = "scene"; // or "generate"
   std::string output, objects, report;
   SAS::Urban_scene_options scene;
+  std::string sensor = "profile";
   bool quiet = false, verbose = false;
 };
 
@@ -78,7 +79,16 @@ int run_scene(const Scene_options& o)
     outputs.add_output(o.objects, "ground-truth objects");
   }
   outputs.add_optional_output(o.report, "report");
-  const SAS::Urban_scene_options& so = o.scene;
+  SAS::Urban_scene_options so = o.scene;
+  if(o.sensor == "rotating") { // a car's roof, a Velodyne's reach
+    so.rotating_sensor = true;
+    so.scanner_height = 1.73;
+    so.max_range = 100;
+    if(!(so.sweep_spacing >= 0.1))
+      throw Usage_error("--sweep-spacing must be at least 0.1 m");
+    if(so.airborne)
+      throw Usage_error("--airborne goes with --sensor profile only");
+  }
   if(!(so.street_length >= 10 && so.street_length <= 1e5))
     throw Usage_error("--length must be between 10 and 100000 m");
   if(so.target_points < 1000)
@@ -132,6 +142,12 @@ int run_scene(const Scene_options& o)
     parameters["objects_per_100m"] = so.objects_per_100m;
     parameters["noise"] = so.range_noise;
     parameters["airborne"] = so.airborne;
+    parameters["sensor"] = o.sensor;
+    if(o.sensor == "rotating") {
+      parameters["sweep_spacing"] = so.sweep_spacing;
+      parameters["beams"] = so.beams;
+      parameters["sensor_height"] = so.scanner_height;
+    }
     parameters["seed"] = so.seed;
     report["parameters"] = parameters;
     report["number_of_points"] = scan.points.size();
@@ -527,6 +543,14 @@ void add_points_command(CLI::App& app, std::function<int()>& run)
     scene->add_option("--objects-per-100m", so.objects_per_100m, "Objects per 100 m of street")->capture_default_str();
     scene->add_option("--noise", so.range_noise, "Standard deviation of the range noise in metres")->capture_default_str();
     scene->add_flag("--airborne", so.airborne, "Add an airborne pass (points on a grid from above)");
+    scene->add_option("--sensor", s->sensor,
+                      "profile: two tilted profile scanners (mobile mapping, dense); rotating: a 64-beam "
+                      "rotating sensor 1.73 m up on a car in the right lane, 100 m reach (Velodyne-like "
+                      "rings, one full turn every --sweep-spacing metres; --points is then ignored)")
+      ->check(CLI::IsMember({"profile", "rotating"}))
+      ->capture_default_str();
+    scene->add_option("--sweep-spacing", so.sweep_spacing, "Metres of travel between turns of the rotating sensor")
+      ->capture_default_str();
     scene->add_option("--seed", so.seed, "Random seed (same seed, same scene)")->capture_default_str();
     scene->add_option("--threads", so.number_of_threads, "Largest number of threads (0: all cores)")->capture_default_str();
     scene->add_flag("-q,--quiet", s->quiet, "No progress on stderr");

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -362,3 +363,89 @@ TEST(UrbanScene, BadOptions)
   EXPECT_GT(scan.points.size(), 300u * 100u);
 }
 
+
+namespace {
+
+// One sweep of the rotating sensor in the middle of a 40 m street, without range noise.
+PSOR::Urban_scene_options one_sweep()
+{
+  PSOR::Urban_scene_options o = base_options();
+  o.street_length = 40.;
+  o.rotating_sensor = true;
+  o.sweep_spacing = 40.;
+  o.range_noise = 0.;
+  o.beams = 32;
+  o.lowest_elevation = -30.;
+  o.highest_elevation = 10.;
+  o.azimuth_step = 0.2;
+  o.scanner_height = 1.8;
+  return o;
+}
+
+} // namespace
+
+// A rotating sensor's points lie on its rings (one elevation per laser, seen from the sensor); the
+// ground's points thin out with range; each object is seen from the sensor's side; the same
+// points for any number of threads.
+TEST(UrbanScene, RotatingSensorRingsRangeAndOcclusion)
+{
+  PSOR::Urban_scene_options o = one_sweep();
+  const Scanned s = run(o);
+  ASSERT_EQ(s.scan.scan_lines, 1u);
+  ASSERT_GT(s.scan.points.size(), 20000u);
+  const double pi = 3.14159265358979323846;
+  const double sx = 20., sy = o.lane_offset, sz = PSOR::Urban_scene::terrain(sx, sy) + o.scanner_height;
+  const double ring = (o.highest_elevation - o.lowest_elevation) / double(o.beams - 1);
+  std::size_t off_ring = 0, near_ground = 0, far_ground = 0;
+  for(const PSOR::Urban_scan_point& p : s.scan.points) {
+    const double r = std::hypot(p.x - sx, p.y - sy);
+    const double e = std::atan2(p.z - sz, r) * 180 / pi;
+    const double k = (e - o.lowest_elevation) / ring;
+    off_ring += std::abs(k - std::round(k)) > 1e-6 ? 1 : 0;
+    if(p.label == PSOR::GROUND) {
+      near_ground += r >= 5 && r < 7 ? 1 : 0;
+      far_ground += r >= 15 && r < 17 ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(off_ring, 0u) << "every point on a laser's cone";
+  // Ground points per square metre: annuli of the same width, 12 and 32 m around; the spacing of
+  // the rings grows with the square of the range on flat ground.
+  ASSERT_GT(far_ground, 0u);
+  EXPECT_GT(double(near_ground) / (6 * 2) / (double(far_ground) / (16 * 2)), 4.0);
+  // Objects (wider than 0.4 m; a traffic light's arm puts its box centre over the road): most of
+  // their points face the sensor.
+  std::map<int, std::pair<std::size_t, std::size_t>> facing; // id -> (facing, all)
+  for(const PSOR::Urban_scan_point& p : s.scan.points)
+    if(p.instance > 0) {
+      const PSOR::Urban_object& ob = s.scene.objects[std::size_t(p.instance - 1)];
+      const double cx = 0.5 * (ob.bbox.xmin() + ob.bbox.xmax()), cy = 0.5 * (ob.bbox.ymin() + ob.bbox.ymax());
+      auto& f = facing[p.instance];
+      f.first += (p.x - cx) * (sx - cx) + (p.y - cy) * (sy - cy) >= 0 ? 1 : 0;
+      ++f.second;
+    }
+  std::size_t seen = 0, one_sided = 0;
+  for(const auto& f : facing) {
+    const PSOR::Urban_object& ob = s.scene.objects[std::size_t(f.first - 1)];
+    if(f.second.second >= 50 && (std::min)(ob.bbox.xmax() - ob.bbox.xmin(), ob.bbox.ymax() - ob.bbox.ymin()) > 0.4) {
+      ++seen;
+      one_sided += double(f.second.first) > 0.8 * double(f.second.second) ? 1 : 0;
+    }
+  }
+  ASSERT_GT(seen, 3u);
+  EXPECT_GE(double(one_sided), 0.8 * double(seen));
+  // Threads.
+  o.number_of_threads = 1;
+  const PSOR::Urban_scan one = PSOR::scan_urban_scene(s.scene, o);
+  ASSERT_EQ(one.points.size(), s.scan.points.size());
+  for(std::size_t i = 0; i < one.points.size(); ++i)
+    ASSERT_EQ(one.points[i].x, s.scan.points[i].x);
+  // Bad sensor parameters.
+  o.beams = 0;
+  EXPECT_THROW(PSOR::scan_urban_scene(s.scene, o), CGAL::Shape_analysis::Bad_input);
+  o = one_sweep();
+  o.lowest_elevation = 20.;
+  EXPECT_THROW(PSOR::scan_urban_scene(s.scene, o), CGAL::Shape_analysis::Bad_input);
+  o = one_sweep();
+  o.airborne = true;
+  EXPECT_THROW(PSOR::scan_urban_scene(s.scene, o), CGAL::Shape_analysis::Bad_input);
+}

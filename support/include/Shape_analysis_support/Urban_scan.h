@@ -85,6 +85,49 @@ inline void cast(const Tree& tree, const Urban_scene& sc, const K::Point_3& o, c
 
 } // namespace urban_detail
 
+// Sweeps of the rotating multi-beam sensor along the street (see Urban_scene_options): sweep i at
+// x = (i + 0.5) sweep_spacing, y = lane_offset, each laser firing every azimuth_step from a phase
+// of its own; every sweep draws from its own stream.
+inline Urban_scan scan_rotating(const Urban_scene& sc, const Urban_scene_options& o, const urban_detail::Tree& tree)
+{
+  using namespace urban_detail;
+  const double degree = 3.14159265358979323846 / 180;
+  if(o.beams < 1 || o.beams > 1024 || !(o.lowest_elevation >= -90 && o.lowest_elevation <= o.highest_elevation &&
+                                        o.highest_elevation <= 90) ||
+     !(o.azimuth_step >= 0.01 && o.azimuth_step <= 90) || !(o.sweep_spacing >= 0.1) || !std::isfinite(o.lane_offset))
+    throw CGAL::Shape_analysis::Bad_input("Urban scene: rotating sensor parameter out of range (beams in [1, 1024], "
+                                          "elevations in [-90, 90] increasing, azimuth_step in [0.01, 90] degrees, "
+                                          "sweep_spacing >= 0.1 m)");
+  const std::size_t sweeps = (std::max)(std::size_t(1), std::size_t(sc.street_length / o.sweep_spacing));
+  const std::size_t firings = std::size_t(std::ceil(360 / o.azimuth_step));
+  std::vector<std::vector<Urban_scan_point>> out(sweeps);
+  CGAL::Shape_analysis::internal::Parallel_workspaces<char> parallel(o.number_of_threads);
+  parallel.for_each(0, sweeps, [&](std::size_t i, char&) {
+    Rng rng(o.seed, i);
+    const double x = (double(i) + 0.5) * o.sweep_spacing;
+    const K::Point_3 origin(x, o.lane_offset, Urban_scene::terrain(x, o.lane_offset) + o.scanner_height);
+    for(std::size_t b = 0; b < o.beams; ++b) {
+      const double e = (o.beams == 1 ? o.lowest_elevation
+                                     : o.lowest_elevation + (o.highest_elevation - o.lowest_elevation) * double(b) /
+                                                                double(o.beams - 1)) * degree;
+      const double phase = rng.uniform();
+      for(std::size_t j = 0; j < firings; ++j) {
+        const double a = (double(j) + phase) * o.azimuth_step * degree;
+        const K::Vector_3 d(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
+        cast(tree, sc, origin, d, o.max_range, o.range_noise, false, rng, out[i]);
+      }
+    }
+  });
+  Urban_scan scan;
+  scan.scan_lines = sweeps, scan.profile_spacing = o.sweep_spacing, scan.angular_step = o.azimuth_step * degree;
+  for(auto& s : out) {
+    scan.points.insert(scan.points.end(), s.begin(), s.end());
+    std::vector<Urban_scan_point>().swap(s);
+  }
+  scan.mobile_points = scan.points.size();
+  return scan;
+}
+
 // Scans `sc` with the mobile scanner (and the airborne pass if asked) described by `o`.
 inline Urban_scan scan_urban_scene(const Urban_scene& sc, const Urban_scene_options& o)
 {
@@ -97,6 +140,11 @@ inline Urban_scan scan_urban_scene(const Urban_scene& sc, const Urban_scene_opti
                                           "airborne_spacing >= 0.01)");
   Tree tree(sc.triangles.begin(), sc.triangles.end());
   tree.build();
+  if(o.rotating_sensor) {
+    if(o.airborne)
+      throw CGAL::Shape_analysis::Bad_input("Urban scene: the rotating sensor has no airborne pass");
+    return scan_rotating(sc, o, tree);
+  }
   const double L = sc.street_length, pi = 3.14159265358979323846;
   const double tilt = pi / 6.;
   typedef std::vector<Urban_scan_point> Line;

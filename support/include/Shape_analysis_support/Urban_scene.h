@@ -75,6 +75,18 @@ struct Urban_scene_options
   double scanner_height = 2.;          // m above the road
   double max_range = 60.;              // m
   double range_noise = 0.015;          // m, standard deviation of the Gaussian range error
+  // Rotating multi-beam sensor (a Velodyne on a car in the right lane) instead of the two profile
+  // scanners: one full turn every `sweep_spacing` metres of travel, `beams` lasers at elevations
+  // spread evenly over [lowest_elevation, highest_elevation], a firing every `azimuth_step`;
+  // target_points is then ignored (the sweeps set the density), scanner_height and max_range
+  // still apply. The lasers' defaults are an HDL-64E's (KITTI's sensor, 1.73 m above the road).
+  bool rotating_sensor = false;
+  std::size_t beams = 64;
+  double lowest_elevation = -24.8;  // degrees
+  double highest_elevation = 2.0;   // degrees
+  double azimuth_step = 0.17;       // degrees
+  double sweep_spacing = 10.;       // m
+  double lane_offset = -2.;         // y of the sensor's path
   // Airborne pass (added to the mobile points).
   bool airborne = false;
   double airborne_spacing = 0.5; // m, grid step
@@ -134,7 +146,7 @@ struct Urban_scan
 {
   std::vector<Urban_scan_point> points; // mobile points by scan line, then airborne points
   std::size_t mobile_points = 0;
-  std::size_t scan_lines = 0;
+  std::size_t scan_lines = 0;  // profile lines, or sweeps of the rotating sensor
   double profile_spacing = 0, angular_step = 0;
 };
 
