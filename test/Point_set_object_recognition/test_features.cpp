@@ -3,10 +3,13 @@
 
 // The features of candidate objects (extract_object_features.h) on shapes whose features are
 // known: a pole, a bar, a box, apart from each other; invariance under a turn of the scene; bad
-// input.
+// input. Training on such shapes and classifying others (train_object_classifier.h), and the
+// evaluation of recognition.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Point_set_object_recognition/Object_classifiers.h>
 #include <CGAL/Point_set_object_recognition/extract_object_features.h>
+#include <CGAL/Point_set_object_recognition/train_object_classifier.h>
 
 #include <gtest/gtest.h>
 
@@ -158,6 +161,109 @@ TEST(ObjectFeatures, SpinImageRadiusAndBadInput)
   std::vector<P3> bad = scene.locations;
   bad[1][0] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(PSOR::extract_object_features(scene.points, bad), CGAL::Shape_analysis::Bad_input);
+}
+
+// Poles (class 0) and boxes (class 1) of random sizes every 15 m along x from `x0`, turned by
+// random angles; their bases in `objects`.
+void add_poles_and_boxes(std::uint32_t seed, double x0, std::size_t count, std::vector<Point>& points,
+                         std::vector<PSOR::Labelled_location>& objects)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  for(std::size_t k = 0; k < count; ++k) {
+    const double cx = x0 + 15.0 * double(k), cy = 0, a = 6.28 * u(rng), c = std::cos(a), s = std::sin(a);
+    const auto add = [&](double x, double y, double z) { points.emplace_back(cx + c * x - s * y, cy + s * x + c * y, z); };
+    PSOR::Labelled_location l;
+    l.position = {{cx, cy, 0}};
+    l.label = k % 2;
+    objects.push_back(l);
+    if(l.label == 0) { // a pole 2.5 to 4 m high
+      const double h = 2.5 + 1.5 * u(rng);
+      for(double z = 0.02; z < h; z += 0.02)
+        add(0.05 * std::cos(50 * z), 0.05 * std::sin(50 * z), z);
+    } else { // a box 2-4 x 1.5-2 x 1-1.6 m
+      const double l2 = 1 + u(rng), w2 = 0.75 + 0.25 * u(rng), h = 1 + 0.6 * u(rng);
+      for(double x = -l2; x <= l2; x += 0.1)
+        for(double y = -w2; y <= w2; y += 0.1)
+          add(x, y, h);
+      for(double z = 0.05; z < h; z += 0.1)
+        for(double x = -l2; x <= l2; x += 0.1)
+          add(x, -w2, z), add(x, w2, z);
+    }
+  }
+}
+
+// Trained on one row of shapes (and empty places as background), kNN and the forest name the
+// shapes of another row, and call an empty place background.
+TEST(ObjectRecognition, TrainOnOneSceneClassifyAnother)
+{
+  std::vector<Point> train_points, test_points;
+  std::vector<PSOR::Labelled_location> train_objects, test_objects;
+  add_poles_and_boxes(1, 0, 8, train_points, train_objects);
+  add_poles_and_boxes(2, 200, 6, test_points, test_objects);
+  std::vector<std::array<double, 3>> train_candidates, test_candidates;
+  for(const auto& o : train_objects)
+    train_candidates.push_back(o.position); // near objects: no background example
+  for(double x : {-30.0, -45.0, 150.0})
+    train_candidates.push_back({{x, 0, 0}});
+  for(const auto& o : test_objects)
+    test_candidates.push_back(o.position);
+  test_candidates.push_back({{400, 0, 0}});
+  std::vector<Point> all_test = test_points;
+  PSOR::Knn_object_classifier knn(1);
+  PSOR::Random_forest_object_classifier forest(20, 10, 3);
+  std::vector<Point> all_train = train_points;
+  // A point beyond the empty places, so that they lie inside the scans' extents.
+  all_train.emplace_back(-50, 0, 0.5), all_train.emplace_back(160, 0, 0.5);
+  all_test.emplace_back(410, 0, 0.5);
+  const PSOR::Object_features f = PSOR::train_object_classifier(knn, all_train, train_objects, 2, train_candidates);
+  EXPECT_EQ(f.values.size(), train_objects.size() + 3) << "every object and the three empty places";
+  PSOR::train_object_classifier(forest, all_train, train_objects, 2, train_candidates);
+  for(const auto* c : {static_cast<const void*>(&knn), static_cast<const void*>(&forest)}) {
+    const std::vector<PSOR::Labelled_location> r =
+        c == &knn ? PSOR::classify_objects(knn, all_test, test_candidates)
+                  : PSOR::classify_objects(forest, all_test, test_candidates);
+    ASSERT_EQ(r.size(), test_candidates.size());
+    for(std::size_t k = 0; k < test_objects.size(); ++k)
+      EXPECT_EQ(r[k].label, test_objects[k].label) << "object " << k;
+    EXPECT_EQ(r.back().label, 2u) << "the empty place is background";
+    const auto s = PSOR::evaluate_recognition(r, test_objects, 2);
+    EXPECT_EQ(s[2].precision, 1.0);
+    EXPECT_EQ(s[2].recall, 1.0);
+  }
+  EXPECT_THROW(PSOR::train_object_classifier(knn, all_train, std::vector<PSOR::Labelled_location>(), 2, train_candidates),
+               CGAL::Shape_analysis::Bad_input);
+  EXPECT_THROW(PSOR::train_object_classifier(knn, all_train, train_objects, 1, train_candidates),
+               CGAL::Shape_analysis::Bad_input)
+      << "a label not below the number of classes";
+}
+
+TEST(ObjectRecognition, EvaluationCounts)
+{
+  const auto at = [](double x, std::size_t label) {
+    PSOR::Labelled_location l;
+    l.position = {{x, 0, 0}};
+    l.label = label;
+    return l;
+  };
+  // Right class at 0.9 m; wrong class at 5; background at 20 (left out); truth 0, 5 (class 0), 21 (1).
+  const std::vector<PSOR::Labelled_location> predicted{at(0.9, 0), at(5, 1), at(20, 2)};
+  const std::vector<PSOR::Labelled_location> truth{at(0, 0), at(5, 0), at(21, 1)};
+  const auto s = PSOR::evaluate_recognition(predicted, truth, 2);
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_EQ(s[0].predicted, 1u);
+  EXPECT_EQ(s[0].correct, 1u);
+  EXPECT_EQ(s[0].objects, 2u);
+  EXPECT_EQ(s[0].found, 1u);
+  EXPECT_EQ(s[1].predicted, 1u);
+  EXPECT_EQ(s[1].correct, 0u);
+  EXPECT_EQ(s[1].objects, 1u);
+  EXPECT_EQ(s[1].found, 0u);
+  EXPECT_DOUBLE_EQ(s[2].precision, 0.5);
+  EXPECT_DOUBLE_EQ(s[2].recall, 1.0 / 3.0);
+  EXPECT_EQ(PSOR::evaluate_recognition(predicted, truth, 2, 0.5)[0].correct, 0u) << "0.9 m is beyond 0.5 m";
+  EXPECT_THROW(PSOR::evaluate_recognition(predicted, truth, 1), CGAL::Shape_analysis::Bad_input);
+  EXPECT_THROW(PSOR::evaluate_recognition(predicted, truth, 2, 0.0), CGAL::Shape_analysis::Bad_input);
 }
 
 } // namespace
