@@ -42,11 +42,15 @@ inline void check_finite_location(const std::array<double, 3>& p, const std::str
 
 /*!
 \ingroup PkgPointSetObjectRecognitionRef
-Trains `classifier` on the objects of a labelled scan (thesis section 4.4.2): the features
-(`extract_object_features()`) of every labelled object at its location, with its label, and, as
-examples of the class `background` (index `number_of_classes`), the features of every candidate
-location (typically those of `locate_objects()` on the same scan) with no labelled object within
-`background_distance` horizontally. The classifier thus learns `number_of_classes + 1` classes.
+Trains `classifier` on the objects of a labelled scan (thesis section 4.4.2), from the features
+(`extract_object_features()`) at the candidate locations (typically those of `locate_objects()`
+on the same scan), where objects will be seen when classifying: a labelled object is learned at
+each candidate within `background_distance` of it (horizontally), with its label, or at its own
+location when no candidate lies that near; a candidate with no labelled object within
+`background_distance` is an example of the class `background` (index `number_of_classes`). The
+classifier thus learns `number_of_classes + 1` classes. (Learning the objects at their true
+locations only, the random forest recognized 0.66 / 0.63 of a generated street's objects, against
+0.80 / 0.76 this way: `bench_object_recognition`.)
 
 \tparam Classifier a model of the `ObjectClassifier` concept (\ref ObjectClassifierConcept)
 \tparam PointRange a model of `ConstRange` whose iterator type is `RandomAccessIterator`
@@ -59,11 +63,10 @@ location (typically those of `locate_objects()` on the same scan) with no labell
 \param number_of_classes the number of object classes (without the background)
 \param candidates candidate locations, the unlabelled ones giving background examples
 \param background_distance a candidate within this horizontal distance (metres) of a labelled
-       object is no background example (the thesis: 1 m)
+       object is an example of its class, not of the background (the thesis' match: 1 m)
 \param np the named parameters of `extract_object_features()`
 
-\returns the features the classifier learned from: the objects' rows first, then the background
-         examples'
+\returns the features the classifier learned from, one row per example
 
 \throws CGAL::Shape_analysis::Bad_input if there is no labelled object, a label is not below
         `number_of_classes`, a location is not finite, `background_distance` is not positive, or
@@ -81,24 +84,35 @@ Object_features train_object_classifier(Classifier& classifier, const PointRange
     throw Bad_input(who + ": no labelled object");
   if(!(background_distance > 0) || !std::isfinite(background_distance))
     throw Bad_input(who + ": background_distance must be a positive number");
-  std::vector<std::array<double, 3>> at;
-  std::vector<std::size_t> labels;
   for(const Labelled_location& o : objects) {
     internal::check_finite_location(o.position, who);
     if(o.label >= number_of_classes)
       throw Bad_input(who + ": a label is not below number_of_classes");
-    at.push_back(o.position);
-    labels.push_back(o.label);
   }
-  for(const auto& c : internal::location_positions(candidates)) {
+  const std::vector<std::array<double, 3>> candidate = internal::location_positions(candidates);
+  for(const auto& c : candidate)
     internal::check_finite_location(c, who);
-    bool near = false;
+  const auto near = [&](const std::array<double, 3>& c, const Labelled_location& o) {
+    return std::hypot(c[0] - o.position[0], c[1] - o.position[1]) <= background_distance;
+  };
+  std::vector<std::array<double, 3>> at;
+  std::vector<std::size_t> labels;
+  for(const Labelled_location& o : objects) { // where the classification will see it
+    bool seen = false;
+    for(const auto& c : candidate)
+      if(near(c, o)) {
+        at.push_back(c), labels.push_back(o.label);
+        seen = true;
+      }
+    if(!seen)
+      at.push_back(o.position), labels.push_back(o.label);
+  }
+  for(const auto& c : candidate) { // background: away from every labelled object
+    bool away = true;
     for(const Labelled_location& o : objects)
-      near = near || std::hypot(c[0] - o.position[0], c[1] - o.position[1]) <= background_distance;
-    if(!near) {
-      at.push_back(c);
-      labels.push_back(number_of_classes);
-    }
+      away = away && !near(c, o);
+    if(away)
+      at.push_back(c), labels.push_back(number_of_classes);
   }
   Object_features f = extract_object_features(points, at, np);
   classifier.train(f.values, labels, number_of_classes + 1);
