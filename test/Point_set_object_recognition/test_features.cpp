@@ -9,7 +9,10 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Point_set_object_recognition/Object_classifiers.h>
 #include <CGAL/Point_set_object_recognition/extract_object_features.h>
+#include <CGAL/Point_set_object_recognition/recognize_objects.h>
 #include <CGAL/Point_set_object_recognition/train_object_classifier.h>
+
+#include <Shape_analysis_support/Urban_scan.h>
 
 #include <gtest/gtest.h>
 
@@ -264,6 +267,63 @@ TEST(ObjectRecognition, EvaluationCounts)
   EXPECT_EQ(PSOR::evaluate_recognition(predicted, truth, 2, 0.5)[0].correct, 0u) << "0.9 m is beyond 0.5 m";
   EXPECT_THROW(PSOR::evaluate_recognition(predicted, truth, 1), CGAL::Shape_analysis::Bad_input);
   EXPECT_THROW(PSOR::evaluate_recognition(predicted, truth, 2, 0.0), CGAL::Shape_analysis::Bad_input);
+}
+
+// recognize_objects() with a classifier: with one tile, each location gets the class that
+// classify_objects() gives it on the same points; the same for any number of threads and, as
+// far as tiles see the same surroundings, tile by tile; an untrained classifier is refused.
+TEST(ObjectRecognition, RecognizeObjectsWithAClassifier)
+{
+  namespace SAS = CGAL::Shape_analysis_support;
+  SAS::Urban_scene_options o;
+  o.seed = 3, o.street_length = 80, o.target_points = 300000;
+  const SAS::Urban_scene scene = SAS::make_urban_scene(o);
+  std::vector<Point> scan;
+  for(const auto& p : SAS::scan_urban_scene(scene, o).points)
+    scan.emplace_back(p.x, p.y, p.z);
+  std::vector<PSOR::Labelled_location> truth;
+  for(const SAS::Urban_object& ob : scene.objects) {
+    PSOR::Labelled_location l;
+    l.position = {{ob.x, ob.y, ob.z}};
+    l.label = std::size_t(ob.object_class - SAS::first_object_class);
+    truth.push_back(l);
+  }
+  const PSOR::Background_removal_result b = PSOR::remove_background(scan);
+  std::vector<Point> above, foreground;
+  for(std::size_t i : PSOR::points_above_ground(b))
+    above.push_back(scan[i]);
+  for(std::size_t i : b.foreground)
+    foreground.push_back(scan[i]);
+  const PSOR::Localization_result located = PSOR::locate_objects(foreground);
+  PSOR::Random_forest_object_classifier forest(20, 12, 5);
+  PSOR::train_object_classifier(forest, above, truth, SAS::number_of_object_classes, located.locations);
+
+  const PSOR::Object_recognition_result r =
+      PSOR::recognize_objects(scan, PSOR::parameters::object_classifier(forest).tile_size(1000.0));
+  ASSERT_FALSE(r.locations.empty());
+  ASSERT_EQ(r.labels.size(), r.locations.size());
+  ASSERT_EQ(r.confidences.size(), r.locations.size());
+  std::vector<Point> kept;
+  for(std::size_t i = 0; i < scan.size(); ++i)
+    if(r.kind[i] != PSOR::Point_kind::GROUND)
+      kept.push_back(scan[i]);
+  const std::vector<PSOR::Labelled_location> c = PSOR::classify_objects(forest, kept, r.locations);
+  std::size_t objects = 0;
+  for(std::size_t k = 0; k < c.size(); ++k) {
+    EXPECT_EQ(r.labels[k], c[k].label) << "location " << k;
+    EXPECT_DOUBLE_EQ(r.confidences[k], c[k].confidence);
+    objects += r.labels[k] < std::size_t(SAS::number_of_object_classes) ? 1 : 0;
+  }
+  EXPECT_GT(objects, r.locations.size() / 2) << "most locations hold an object of a class";
+  const PSOR::Object_recognition_result one =
+      PSOR::recognize_objects(scan, PSOR::parameters::object_classifier(forest).tile_size(1000.0).number_of_threads(1));
+  EXPECT_EQ(one.labels, r.labels);
+  const PSOR::Object_recognition_result tiles =
+      PSOR::recognize_objects(scan, PSOR::parameters::object_classifier(forest).tile_size(30.0));
+  EXPECT_EQ(tiles.labels.size(), tiles.locations.size());
+  EXPECT_TRUE(PSOR::recognize_objects(scan, PSOR::parameters::tile_size(1000.0)).labels.empty());
+  EXPECT_THROW(PSOR::recognize_objects(scan, PSOR::parameters::object_classifier(PSOR::Knn_object_classifier(1))),
+               CGAL::Shape_analysis::Bad_input);
 }
 
 } // namespace

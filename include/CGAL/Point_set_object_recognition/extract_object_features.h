@@ -172,6 +172,50 @@ inline std::vector<double> spin_image(const std::vector<P3>& p, const Horizontal
   return image;
 }
 
+// The features of the objects based at `at` among the points `p` (see extract_object_features()):
+// `automatic` the options of the first segmentation, whose result may be given (`computed`, one
+// object per location) rather than computed again.
+inline Object_features object_features(const std::vector<P3>& p, const std::vector<P3>& at,
+                                       const Segment_objects_options& automatic, double spin_image_radius,
+                                       const std::vector<Object_segmentation>* computed = nullptr)
+{
+  Segment_objects_options min_cut = automatic, within = automatic;
+  min_cut.segmentation_method = Segmentation_method::MIN_CUT;
+  min_cut.background_radius = 4.0;
+  within.segmentation_method = Segmentation_method::ALL_WITHIN_RADIUS;
+  within.background_radius = 2.0;
+  const std::array<std::pair<const char*, const Segment_objects_options*>, 3> kinds{
+      {{"automatic.", &automatic}, {"min_cut_4m.", &min_cut}, {"within_2m.", &within}}};
+  std::vector<std::vector<Object_segmentation>> segmentations;
+  for(const auto& k : kinds)
+    if(computed && k.second == &automatic)
+      segmentations.push_back(*computed);
+    else
+      segmentations.push_back(segment_objects(p, at, *k.second).objects);
+
+  Object_features r;
+  const char* shape_names[] = {"points", "volume", "mean_height", "height_deviation", "major_deviation",
+                               "minor_deviation"};
+  for(const auto& k : kinds)
+    for(const char* name : shape_names)
+      r.names.push_back(std::string(k.first) + name);
+  for(int i = 0; i < spin_radial_bins; ++i)
+    for(int j = 0; j < spin_height_bins; ++j)
+      r.names.push_back("spin." + std::to_string(i) + "." + std::to_string(j));
+  const Horizontal_cells cells(p, spin_image_radius);
+  r.values.resize(at.size());
+  for(std::size_t l = 0; l < at.size(); ++l) {
+    std::vector<double>& row = r.values[l];
+    for(const std::vector<Object_segmentation>& s : segmentations) {
+      const std::array<double, 6> f = shape_features(p, s[l].points, at[l]);
+      row.insert(row.end(), f.begin(), f.end());
+    }
+    const std::vector<double> spin = spin_image(p, cells, at[l], spin_image_radius);
+    row.insert(row.end(), spin.begin(), spin.end());
+  }
+  return r;
+}
+
 } // namespace internal
 
 /*!
@@ -227,40 +271,8 @@ Object_features extract_object_features(const PointRange& points, const Location
   if(!(fo.spin_image_radius > 0) || !std::isfinite(fo.spin_image_radius))
     throw Bad_input("extract_object_features: spin_image_radius must be positive and finite");
   const Segment_objects_options automatic = internal::checked_segmentation_options(np, "extract_object_features");
-  Segment_objects_options min_cut = automatic, within = automatic;
-  min_cut.segmentation_method = Segmentation_method::MIN_CUT;
-  min_cut.background_radius = 4.0;
-  within.segmentation_method = Segmentation_method::ALL_WITHIN_RADIUS;
-  within.background_radius = 2.0;
-  const std::vector<internal::P3> p = internal::point_arrays(points, np);
-  const std::vector<internal::P3> at = internal::location_positions(locations);
-  const std::array<std::pair<const char*, const Segment_objects_options*>, 3> kinds{
-      {{"automatic.", &automatic}, {"min_cut_4m.", &min_cut}, {"within_2m.", &within}}};
-  std::vector<Segmentation_result> segmentations;
-  for(const auto& k : kinds)
-    segmentations.push_back(internal::segment_objects(p, at, *k.second));
-
-  Object_features r;
-  const char* shape_names[] = {"points", "volume", "mean_height", "height_deviation", "major_deviation",
-                               "minor_deviation"};
-  for(const auto& k : kinds)
-    for(const char* name : shape_names)
-      r.names.push_back(std::string(k.first) + name);
-  for(int i = 0; i < internal::spin_radial_bins; ++i)
-    for(int j = 0; j < internal::spin_height_bins; ++j)
-      r.names.push_back("spin." + std::to_string(i) + "." + std::to_string(j));
-  const internal::Horizontal_cells cells(p, fo.spin_image_radius);
-  r.values.resize(at.size());
-  for(std::size_t l = 0; l < at.size(); ++l) {
-    std::vector<double>& row = r.values[l];
-    for(const Segmentation_result& s : segmentations) {
-      const std::array<double, 6> f = internal::shape_features(p, s.objects[l].points, at[l]);
-      row.insert(row.end(), f.begin(), f.end());
-    }
-    const std::vector<double> spin = internal::spin_image(p, cells, at[l], fo.spin_image_radius);
-    row.insert(row.end(), spin.begin(), spin.end());
-  }
-  return r;
+  return internal::object_features(internal::point_arrays(points, np), internal::location_positions(locations), automatic,
+                                   fo.spin_image_radius);
 }
 
 } // namespace Point_set_object_recognition

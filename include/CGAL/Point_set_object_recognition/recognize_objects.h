@@ -11,6 +11,7 @@
 
 #include <CGAL/Point_set_3.h>
 
+#include <CGAL/Point_set_object_recognition/extract_object_features.h>
 #include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
 #include <CGAL/Point_set_object_recognition/segment_objects.h>
@@ -23,9 +24,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <iterator>
 #include <limits>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -55,6 +58,10 @@ struct Object_recognition_result
   static constexpr std::size_t no_object = std::size_t(-1); ///< see `object_of_point`
   /// Per input point, what the background removal of its own tile made of it.
   std::vector<Point_kind> kind;
+  /// With an `object_classifier`: per location, its class (the classifier's; with one trained by
+  /// `train_object_classifier()`, the number of classes means background); empty otherwise.
+  std::vector<std::size_t> labels;
+  std::vector<double> confidences; ///< per location, the classifier's confidence in its label
   std::vector<Scene_tile> tiles;   ///< the tiles that hold points, in the order processed
   std::size_t largest_tile = 0;    ///< the most points a tile was processed with
   double seconds = 0;              ///< the whole call
@@ -130,6 +137,8 @@ struct Recognition_options : Recognize_objects_options
   Remove_background_options background;
   Locate_objects_options localization;
   Segment_objects_options segmentation;
+  // With a classifier: the label and confidence of features (one row), else empty.
+  std::function<std::size_t(const std::vector<double>&, double&)> classify;
 };
 
 // The options of the stages from those of recognize_objects(), checked (Bad_input).
@@ -171,6 +180,8 @@ struct Tile_output
   Scene_tile tile;
   std::vector<Object_location> locations;
   std::vector<Object_segmentation> objects;
+  std::vector<std::size_t> labels;
+  std::vector<double> confidences;
 };
 
 // The tiles of the scene of the n points `point(i)`; Bad_input for a coordinate that is not finite
@@ -307,6 +318,14 @@ void process_tile(std::size_t t, long reach, const Tile_grid& grid, const std::v
     for(std::size_t k = 0; k < above.size(); ++k)
       kept[k] = q[above[k]];
     Segmentation_result s = internal::segment_objects(kept, own, o.segmentation);
+    if(o.classify) { // the features of the tile's objects among its own points, this segmentation reused
+      const Object_features f = object_features(kept, own, o.segmentation, Extract_object_features_options().spin_image_radius,
+                                                &s.objects);
+      out.labels.resize(own.size());
+      out.confidences.resize(own.size());
+      for(std::size_t k = 0; k < own.size(); ++k)
+        out.labels[k] = o.classify(f.values[k], out.confidences[k]);
+    }
     for(Object_segmentation& object : s.objects) {
       for(std::size_t& i : object.points)
         i = local[above[i]]; // increasing, as `above` and `local` are
@@ -339,6 +358,8 @@ void merge_tiles(std::vector<Tile_output>& outputs, const PointAt& point, Object
       }
       r.objects.push_back(std::move(out.objects[k]));
     }
+    r.labels.insert(r.labels.end(), out.labels.begin(), out.labels.end());
+    r.confidences.insert(r.confidences.end(), out.confidences.begin(), out.confidences.end());
     r.tiles.push_back(out.tile);
     out = Tile_output();
   }
@@ -404,6 +425,23 @@ Object_recognition_result recognize_objects_of_range(const PointRange& points, c
     const auto& q = get(point_map, *(begin + std::ptrdiff_t(i)));
     return P3{{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
   }, o);
+}
+
+// The options of recognize_objects() from its named parameters, with the classifier given as
+// `object_classifier` (a model of ObjectClassifier; copied, its models share their trained data).
+template <typename NamedParameters>
+Recognition_options recognition_options_of(const NamedParameters& np)
+{
+  Recognition_options o = recognition_options(recognize_objects_options(np));
+  const auto& classifier =
+      CGAL::parameters::get_parameter_reference(np, CGAL::Shape_analysis::internal_np::object_classifier_tag);
+  typedef std::decay_t<decltype(classifier)> Classifier;
+  if constexpr(!std::is_same<Classifier, CGAL::internal_np::Param_not_found>::value) {
+    if(!classifier.is_trained())
+      throw Bad_input("recognize_objects: the object_classifier is not trained");
+    o.classify = [c = classifier](const std::vector<double>& f, double& confidence) { return c.predict(f, confidence); };
+  }
+  return o;
 }
 
 } // namespace internal
@@ -486,6 +524,16 @@ same relative order).
     \cgalParamDefault{`Recognize_objects_options::background_radius`}
     \cgalParamExtra{must be positive}
   \cgalParamNEnd
+  \cgalParamNBegin{object_classifier}
+    \cgalParamDescription{a trained classifier (a model of the `ObjectClassifier` concept, e.g. one
+      trained by `train_object_classifier()`); each object then gets the class it predicts from
+      the features of `extract_object_features()` (with the segmentation's options and the default
+      spin image), computed within the object's tile, in `Object_recognition_result::labels` and
+      `Object_recognition_result::confidences`}
+    \cgalParamType{a model of `ObjectClassifier`}
+    \cgalParamDefault{none: the objects are not classified}
+    \cgalParamExtra{must be trained}
+  \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
     \cgalParamDescription{the largest number of threads of the loop over the tiles and of each stage
       within a tile (0: TBB's choice); the results do not depend on it}
@@ -498,12 +546,13 @@ The other parameters of the three stages take the defaults of `Remove_background
 `Locate_objects_options` and `Segment_objects_options`.
 
 \returns the locations, one segmentation per location, the object and the kind of every point,
-         and the tiles with their sizes and times
+         the tiles with their sizes and times, and, with a classifier, the class of every location
 
 \throws CGAL::Shape_analysis::Bad_input if the cloud is empty or holds \f$2^{32} - 1\f$ points or
         more, a coordinate is not finite, a parameter is out of its range, the scene would have
-        more than \f$10^8\f$ tiles, or a stage rejects a tile (as `remove_background()`,
-        `locate_objects()` and `segment_objects()` do: a tile too tall for their grids)
+        more than \f$10^8\f$ tiles, a stage rejects a tile (as `remove_background()`,
+        `locate_objects()` and `segment_objects()` do: a tile too tall for their grids), or the
+        classifier is not trained or was trained on features of another dimension
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 Object_recognition_result recognize_objects(const PointRange& points,
@@ -512,8 +561,7 @@ Object_recognition_result recognize_objects(const PointRange& points,
   typedef typename std::iterator_traits<typename PointRange::const_iterator>::value_type Value;
   const auto point_map = CGAL::parameters::choose_parameter(
     CGAL::parameters::get_parameter(np, CGAL::internal_np::point_map), CGAL::Identity_property_map<Value>());
-  return internal::recognize_objects_of_range(points, point_map,
-                                             internal::recognition_options(recognize_objects_options(np)));
+  return internal::recognize_objects_of_range(points, point_map, internal::recognition_options_of(np));
 }
 
 /// \ingroup PkgPointSetObjectRecognitionRef
@@ -528,8 +576,7 @@ template <typename Point, typename Vector, typename NamedParameters = parameters
 Object_recognition_result recognize_objects(const CGAL::Point_set_3<Point, Vector>& point_set,
                                             const NamedParameters& np = parameters::default_values())
 {
-  return internal::recognize_objects_of_range(point_set, point_set.point_map(),
-                                             internal::recognition_options(recognize_objects_options(np)));
+  return internal::recognize_objects_of_range(point_set, point_set.point_map(), internal::recognition_options_of(np));
 }
 
 } // namespace Point_set_object_recognition

@@ -97,7 +97,8 @@ namespace internal_np {
   X(tile_size_t, tile_size_tag, tile_size)                                           \
   X(tile_margin_t, tile_margin_tag, tile_margin)                                     \
   X(tile_origin_t, tile_origin_tag, tile_origin)                                     \
-  X(spin_image_radius_t, spin_image_radius_tag, spin_image_radius)
+  X(spin_image_radius_t, spin_image_radius_tag, spin_image_radius)                   \
+  X(object_classifier_t, object_classifier_tag, object_classifier)
 
 #define CGAL_SHAPE_ANALYSIS_DECLARE_TAG(X, Y, Z) enum X { Y };
 CGAL_SHAPE_ANALYSIS_NAMED_PARAMETER_LIST(CGAL_SHAPE_ANALYSIS_DECLARE_TAG)
