@@ -113,6 +113,30 @@ Json comparison(double own_build, double own_query, double cgal_build, double cg
   return j;
 }
 
+// CGAL's kd-tree over `points`: the k nearest distances of every query (asked `rounds` times)
+// into `d` (k per query); the smallest build and query times so far kept in `build`, `query`.
+void cgal_knn(const std::vector<SAI::Vector_3d>& points, const std::vector<SAI::Vector_3d>& queries, std::size_t k,
+              int rounds, double& build, double& query, std::vector<double>& d)
+{
+  auto t = Clock::now();
+  std::vector<Point> cp;
+  cp.reserve(points.size());
+  for(const auto& p : points)
+    cp.emplace_back(p.x, p.y, p.z);
+  Kd_tree kd(cp.begin(), cp.end());
+  kd.build();
+  build = (std::min)(build, seconds_since(t));
+  t = Clock::now();
+  for(int round = 0; round < rounds; ++round)
+    for(std::size_t q = 0; q < queries.size(); ++q) {
+      const Knn search(kd, Point(queries[q].x, queries[q].y, queries[q].z), unsigned(k));
+      std::size_t r = 0;
+      for(auto it = search.begin(); it != search.end() && r < k; ++it, ++r)
+        d[q * k + r] = it->second;
+    }
+  query = (std::min)(query, seconds_since(t));
+}
+
 // k nearest of every query among `points`: Point_tree against CGAL's kd-tree. The distances are
 // compared rank by rank.
 Json knn_comparison(const std::vector<SAI::Vector_3d>& points, const std::vector<SAI::Vector_3d>& queries, std::size_t k,
@@ -142,22 +166,7 @@ Json knn_comparison(const std::vector<SAI::Vector_3d>& points, const std::vector
     }
     own_query = (std::min)(own_query, seconds_since(t));
 
-    t = Clock::now();
-    std::vector<Point> cp;
-    cp.reserve(points.size());
-    for(const auto& p : points)
-      cp.emplace_back(p.x, p.y, p.z);
-    Kd_tree kd(cp.begin(), cp.end());
-    kd.build();
-    cgal_build = (std::min)(cgal_build, seconds_since(t));
-    t = Clock::now();
-    for(std::size_t q = 0; q < queries.size(); ++q) {
-      const Knn search(kd, Point(queries[q].x, queries[q].y, queries[q].z), unsigned(k));
-      std::size_t r = 0;
-      for(auto it = search.begin(); it != search.end() && r < k; ++it, ++r)
-        cgal_d[q * k + r] = it->second;
-    }
-    cgal_query = (std::min)(cgal_query, seconds_since(t));
+    cgal_knn(points, queries, k, 1, cgal_build, cgal_query, cgal_d);
   }
 
   std::size_t unequal = 0;
@@ -191,21 +200,7 @@ Json nearest_sample_comparison(const std::vector<SAI::Vector_3d>& points, const 
         own_d[q] = (points[tree.nearest(queries[q])] - queries[q]).squared_length();
     own_query = (std::min)(own_query, seconds_since(t));
 
-    t = Clock::now();
-    std::vector<Point> cp;
-    cp.reserve(points.size());
-    for(const auto& p : points)
-      cp.emplace_back(p.x, p.y, p.z);
-    Kd_tree kd(cp.begin(), cp.end());
-    kd.build();
-    cgal_build = (std::min)(cgal_build, seconds_since(t));
-    t = Clock::now();
-    for(int round = 0; round < rounds; ++round)
-      for(std::size_t q = 0; q < queries.size(); ++q) {
-        const Knn search(kd, Point(queries[q].x, queries[q].y, queries[q].z), 1);
-        cgal_d[q] = search.begin()->second;
-      }
-    cgal_query = (std::min)(cgal_query, seconds_since(t));
+    cgal_knn(points, queries, 1, rounds, cgal_build, cgal_query, cgal_d);
   }
   std::size_t unequal = 0;
   for(std::size_t q = 0; q < queries.size(); ++q)

@@ -9,6 +9,7 @@
 /// (thesis section 4.4).
 
 #include <CGAL/Point_set_object_recognition/extract_object_features.h>
+#include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
 
 #include <array>
@@ -203,24 +204,22 @@ inline std::vector<Class_recognition_score> evaluate_recognition(const std::vect
   }
   for(const Labelled_location& p : predicted)
     internal::check_finite_location(p.position, who);
-  std::vector<Class_recognition_score> s(number_of_classes + 1);
-  const auto near = [&](const Labelled_location& a, const Labelled_location& b) {
-    return a.label == b.label && std::hypot(a.position[0] - b.position[0], a.position[1] - b.position[1]) <= radius;
-  };
+  // Per class, the matching of evaluate_locations() between its locations and its objects.
+  std::vector<std::vector<Object_location>> located(number_of_classes);
+  std::vector<std::vector<std::array<double, 3>>> objects(number_of_classes);
   for(const Labelled_location& p : predicted)
     if(p.label < number_of_classes) {
-      ++s[p.label].predicted;
-      bool ok = false;
-      for(const Labelled_location& t : truth)
-        ok = ok || near(p, t);
-      s[p.label].correct += ok ? 1 : 0;
+      Object_location l;
+      l.position = p.position;
+      located[p.label].push_back(l);
     }
-  for(const Labelled_location& t : truth) {
-    ++s[t.label].objects;
-    bool ok = false;
-    for(const Labelled_location& p : predicted)
-      ok = ok || near(p, t);
-    s[t.label].found += ok ? 1 : 0;
+  for(const Labelled_location& t : truth)
+    objects[t.label].push_back(t.position);
+  std::vector<Class_recognition_score> s(number_of_classes + 1);
+  for(std::size_t c = 0; c < number_of_classes; ++c) {
+    const Localization_evaluation e = evaluate_locations(located[c], objects[c], radius);
+    s[c].predicted = e.number_of_locations, s[c].correct = e.correct_locations;
+    s[c].objects = e.number_of_objects, s[c].found = e.found_objects;
   }
   Class_recognition_score& all = s[number_of_classes];
   for(std::size_t c = 0; c < number_of_classes; ++c) {

@@ -70,55 +70,47 @@ public:
       return;
     auto d = std::make_shared<Data>();
     d->ids = ids;
-    struct Keyed // coordinates and position, sorted in one array
+    // Copies found by sorting the positions by coordinates (in one array).
+    struct Keyed
     {
       double x, y, z;
       std::uint32_t i;
-      bool operator<(const Keyed& o) const { return std::tie(x, y, z, i) < std::tie(o.x, o.y, o.z, o.i); }
+      bool operator<(const Keyed& o) const { return std::tie(x, y, z) < std::tie(o.x, o.y, o.z); }
     };
     std::vector<Keyed> sorted(points.size());
     for(std::size_t i = 0; i < points.size(); ++i)
       sorted[i] = Keyed{points[i].x, points[i].y, points[i].z, std::uint32_t(i)};
     std::sort(sorted.begin(), sorted.end());
-    // Distinct points numbered in the order of their first copies, so that the tree is built
-    // from the caller's order.
-    std::vector<std::uint32_t> distinct_of(points.size());
-    std::vector<std::uint32_t> firsts;
+    std::vector<std::uint32_t> group(points.size()); // per position, its run of copies in `sorted`
+    std::uint32_t runs = 0;
     for(std::size_t j = 0; j < sorted.size(); ++j) {
-      const bool same = j > 0 && sorted[j].x == sorted[j - 1].x && sorted[j].y == sorted[j - 1].y &&
-                        sorted[j].z == sorted[j - 1].z;
-      if(!same)
-        firsts.push_back(sorted[j].i);
-      distinct_of[sorted[j].i] = std::uint32_t(firsts.size() - 1);
+      if(j > 0 && sorted[j - 1] < sorted[j])
+        ++runs;
+      group[sorted[j].i] = runs;
     }
-    std::vector<std::uint32_t> rank(firsts.size()); // sorted number -> number in caller's order
-    std::vector<std::uint32_t> by_first(firsts.size());
-    for(std::size_t i = 0; i < by_first.size(); ++i)
-      by_first[i] = std::uint32_t(i);
-    if(firsts.size() < points.size())
-      std::sort(by_first.begin(), by_first.end(), [&](std::uint32_t a, std::uint32_t b) { return firsts[a] < firsts[b]; });
-    else // no copies: the caller's order
-      for(std::size_t i = 0; i < by_first.size(); ++i)
-        by_first[i] = distinct_of[i];
-    for(std::size_t i = 0; i < by_first.size(); ++i)
-      rank[by_first[i]] = std::uint32_t(i);
-    d->first_copy.assign(firsts.size() + 1, 0);
-    for(std::size_t i = 0; i < points.size(); ++i)
-      ++d->first_copy[rank[distinct_of[i]] + 1];
-    for(std::size_t i = 0; i < firsts.size(); ++i)
-      d->first_copy[i + 1] += d->first_copy[i];
+    // Distinct points numbered as they first come in the caller's order (the tree is built in
+    // that order), each with its copies' positions, increasing.
+    const std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
+    std::vector<std::uint32_t> number(std::size_t(runs) + 1, none), distinct_of(points.size());
+    std::vector<Entry> entries;
+    for(std::size_t i = 0; i < points.size(); ++i) {
+      std::uint32_t& k = number[group[i]];
+      if(k == none) {
+        k = std::uint32_t(d->points.size());
+        d->points.push_back(points[i]);
+        entries.emplace_back(Point(points[i].x, points[i].y, points[i].z), k);
+      }
+      distinct_of[i] = k;
+    }
+    d->first_copy.assign(d->points.size() + 1, 0);
+    for(std::uint32_t k : distinct_of)
+      ++d->first_copy[k + 1];
+    for(std::size_t k = 0; k < d->points.size(); ++k)
+      d->first_copy[k + 1] += d->first_copy[k];
     d->copies.resize(points.size());
     std::vector<std::uint32_t> fill(d->first_copy.begin(), d->first_copy.end() - 1);
-    for(std::size_t i = 0; i < points.size(); ++i) // increasing positions per distinct point
-      d->copies[fill[rank[distinct_of[i]]]++] = std::uint32_t(i);
-    std::vector<Entry> entries;
-    entries.reserve(firsts.size());
-    d->points.reserve(firsts.size());
-    for(std::size_t i = 0; i < by_first.size(); ++i) {
-      const Vector_3d& p = points[firsts[by_first[i]]];
-      d->points.push_back(p);
-      entries.emplace_back(Point(p.x, p.y, p.z), std::uint32_t(i));
-    }
+    for(std::size_t i = 0; i < points.size(); ++i)
+      d->copies[fill[distinct_of[i]]++] = std::uint32_t(i);
     d->tree.reset(new Tree(entries.begin(), entries.end()));
     d->tree->build();
     m_data = std::move(d);
