@@ -8,6 +8,8 @@ packages=(
   libcgal-dev libcgal-demo        # CGAL 5.5 headers; its data archive (meshes used by tests and demo)
   libeigen3-dev libboost-dev libtbb-dev libgmp-dev libmpfr-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev
+  libsvm-dev                       # Svm_object_classifier
+  libosmium2-dev libexpat1-dev zlib1g-dev libgeographiclib-dev  # street maps (OpenStreetMap, UTM)
   python3                         # scripts/check_*.py (sizes, package dependencies), run by ctest
   doxygen libjs-mathjax           # the manual, built and checked (0 warnings) by ctest
   "$@"

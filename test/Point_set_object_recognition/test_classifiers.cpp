@@ -1,18 +1,25 @@
 // Copyright (c) 2026 CGAL Global Shape Analysis contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-// The object classifiers (k nearest neighbours, random forest): training labels recovered, well
-// separated Gaussian classes in 6-D classified on held-out vectors, votes on overlapping classes,
-// standardization, save/load round trips, determinism of the forest, and bad input (training,
+// The object classifiers (k nearest neighbours, random forest, and with libsvm the support vector
+// machine): training labels recovered, well separated Gaussian classes in 6-D classified on
+// held-out vectors, votes on overlapping classes, standardization, save/load round trips,
+// determinism of the forest, the SVM's predictions equal to libsvm's own, and bad input (training,
 // prediction and model files) refused with the classifier left as it was.
 
 #include <CGAL/Point_set_object_recognition/Object_classifiers.h>
 #include <CGAL/Shape_analysis/internal/Random.h>
+#ifdef CGAL_SHAPE_ANALYSIS_USE_LIBSVM
+#include <CGAL/Point_set_object_recognition/Svm_object_classifier.h>
+#include <libsvm/svm.h>
+#endif
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -352,5 +359,271 @@ TEST(ObjectClassifiers, BadModelFilesAreRefused)
   expect_load_refused(forest, replace_first(forest_text, "tree ", "tree 9"));              // wrong node count
   expect_load_refused(forest, replace_first(forest_text, "trees 3", "trees 4"));
 }
+
+#ifdef CGAL_SHAPE_ANALYSIS_USE_LIBSVM
+
+typedef PSOR::Svm_object_classifier Svm;
+
+TEST(ObjectClassifiers, SvmClassifiesSeparatedClassesAndRecoversTrainingLabels)
+{
+  const Data train = gaussian_classes(4, 60, 6, 1., 11, 12), test = gaussian_classes(4, 100, 6, 1., 11, 13);
+  for(const Svm& prototype : {Svm(), Svm(2.5, 5, 0, 0, 0), Svm(2.5, 3, 0, 1, 1, Svm::BALANCED_WEIGHTS)}) {
+    Svm svm = prototype;
+    EXPECT_FALSE(svm.is_trained());
+    svm.train(train.features, train.labels, 4);
+    EXPECT_TRUE(svm.is_trained());
+    EXPECT_EQ(svm.dimension(), 6u);
+    EXPECT_EQ(svm.number_of_classes(), 4u);
+    EXPECT_GT(svm.number_of_support_vectors(), 0u);
+    EXPECT_LT(svm.number_of_support_vectors(), train.features.size());
+    // The thesis' homogeneous kernel (r = 0: an odd function of x'.y') misses one of the 240.
+    EXPECT_GE(accuracy(svm, train), svm.coef0() == 0 ? 0.99 : 1.);
+    EXPECT_GE(accuracy(svm, test), 0.95);
+    // Four classes, three duels each: a clear winner wins them all.
+    double c = 0;
+    svm.predict(test.features[0], c);
+    EXPECT_EQ(c, 1.);
+  }
+}
+
+// The standardized and weighted vectors of `features`, as Svm_object_classifier computes them.
+Features svm_inputs(const Features& train, const Features& features, const std::vector<double>& weights)
+{
+  const std::size_t d = train.front().size();
+  std::vector<double> mean(d, 0.), scale(d, 0.);
+  for(const auto& f : train)
+    for(std::size_t j = 0; j < d; ++j)
+      mean[j] += f[j];
+  for(double& m : mean)
+    m /= double(train.size());
+  for(const auto& f : train)
+    for(std::size_t j = 0; j < d; ++j)
+      scale[j] += (f[j] - mean[j]) * (f[j] - mean[j]);
+  for(double& s : scale)
+    s = std::sqrt(s / double(train.size()));
+  Features out;
+  for(const auto& f : features) {
+    std::vector<double> x(d);
+    for(std::size_t j = 0; j < d; ++j)
+      x[j] = (f[j] - mean[j]) / scale[j] * weights[j];
+    out.push_back(x);
+  }
+  return out;
+}
+
+std::vector<svm_node> svm_nodes(const std::vector<double>& x)
+{
+  std::vector<svm_node> nodes(x.size() + 1);
+  for(std::size_t j = 0; j < x.size(); ++j)
+    nodes[j].index = int(j + 1), nodes[j].value = x[j];
+  nodes.back().index = -1;
+  return nodes;
+}
+
+TEST(ObjectClassifiers, SvmPredictionsAreLibsvmPredictions)
+{
+  // Overlapping classes (many vectors near the decision boundaries), trained by libsvm directly
+  // on the same vectors with the same parameters: svm_predict() and predict() agree everywhere.
+  const Data train = gaussian_classes(4, 50, 6, 2.5, 81, 82), test = gaussian_classes(4, 250, 6, 2.5, 81, 83);
+  for(const Svm& prototype : {Svm(), Svm(2.5, 5, 0, 0, 0), Svm(10, 3, 0.3, 0.5, 1, Svm::BALANCED_WEIGHTS)}) {
+    Svm svm = prototype;
+    svm.train(train.features, train.labels, 4);
+    const std::vector<double> weights = svm.feature_weights();
+    ASSERT_EQ(weights.size(), 6u);
+    if(svm.feature_weight_exponent() == 0)
+      EXPECT_EQ(weights, std::vector<double>(6, 1.));
+    else
+      EXPECT_NE(weights, std::vector<double>(6, 1.));
+    const Features x = svm_inputs(train.features, train.features, weights);
+    std::vector<std::vector<svm_node>> nodes;
+    std::vector<svm_node*> rows;
+    std::vector<double> y;
+    for(std::size_t i = 0; i < x.size(); ++i)
+      nodes.push_back(svm_nodes(x[i])), y.push_back(double(train.labels[i]));
+    for(auto& n : nodes)
+      rows.push_back(n.data());
+    svm_problem problem{int(x.size()), y.data(), rows.data()};
+    std::vector<int> weight_labels = {0, 1, 2, 3};
+    std::vector<double> class_weights(4, 1.); // 50 vectors in each class
+    svm_parameter p{};
+    p.svm_type = C_SVC, p.kernel_type = POLY, p.degree = svm.degree(), p.coef0 = svm.coef0();
+    p.gamma = svm.gamma() > 0 ? svm.gamma() : 1. / 6;
+    p.cache_size = 100, p.eps = 1e-3, p.C = svm.C(), p.shrinking = 1;
+    p.nr_weight = svm.class_weights() == Svm::BALANCED_WEIGHTS ? 4 : 0;
+    p.weight_label = weight_labels.data(), p.weight = class_weights.data();
+    ASSERT_EQ(svm_check_parameter(&problem, &p), nullptr);
+    std::unique_ptr<svm_model, void (*)(svm_model*)> model(svm_train(&problem, &p),
+                                                          [](svm_model* m) { svm_free_and_destroy_model(&m); });
+    EXPECT_EQ(std::size_t(svm_get_nr_sv(model.get())), svm.number_of_support_vectors());
+    const Features tx = svm_inputs(train.features, test.features, weights);
+    std::size_t right = 0;
+    for(std::size_t i = 0; i < tx.size(); ++i) {
+      double c = -1;
+      const std::size_t label = svm.predict(test.features[i], c);
+      EXPECT_EQ(double(label), svm_predict(model.get(), svm_nodes(tx[i]).data())) << i;
+      right += label == test.labels[i];
+    }
+    EXPECT_GT(right, tx.size() / 2); // overlapping, but far better than chance (1/4)
+    EXPECT_LT(right, tx.size());
+  }
+}
+
+TEST(ObjectClassifiers, SvmSaveLoadGivesIdenticalPredictions)
+{
+  const Data train = gaussian_classes(3, 50, 6, 2.5, 41, 42), test = gaussian_classes(3, 80, 6, 2.5, 41, 43);
+  Svm svm(3., 4, 0.2, 0.5, 1.5, Svm::BALANCED_WEIGHTS), loaded;
+  svm.train(train.features, train.labels, 3);
+  std::istringstream is(text(svm));
+  loaded.load(is);
+  EXPECT_EQ(loaded.C(), 3.);
+  EXPECT_EQ(loaded.degree(), 4);
+  EXPECT_EQ(loaded.gamma(), 0.2);
+  EXPECT_EQ(loaded.coef0(), 0.5);
+  EXPECT_EQ(loaded.feature_weight_exponent(), 1.5);
+  EXPECT_EQ(loaded.class_weights(), Svm::BALANCED_WEIGHTS);
+  EXPECT_EQ(loaded.feature_weights(), svm.feature_weights());
+  EXPECT_EQ(loaded.number_of_support_vectors(), svm.number_of_support_vectors());
+  EXPECT_EQ(text(loaded), text(svm));
+  expect_same_predictions(svm, loaded, test.features);
+  expect_same_predictions(svm, loaded, train.features);
+}
+
+TEST(ObjectClassifiers, SvmIsDeterministicAndPredictsFromSeveralThreads)
+{
+  const Data train = gaussian_classes(5, 40, 6, 2., 91, 92), test = gaussian_classes(5, 100, 6, 2., 91, 93);
+  Svm a, b, c;
+  a.train(train.features, train.labels, 5);
+  // The same training on two other threads at once gives the same model.
+  std::thread tb([&] { b.train(train.features, train.labels, 5); });
+  std::thread tc([&] { c.train(train.features, train.labels, 5); });
+  tb.join();
+  tc.join();
+  EXPECT_EQ(text(a), text(b));
+  EXPECT_EQ(text(a), text(c));
+  std::vector<std::size_t> labels(test.features.size());
+  std::vector<double> confidences(test.features.size());
+  for(std::size_t i = 0; i < labels.size(); ++i)
+    labels[i] = a.predict(test.features[i], confidences[i]);
+  EXPECT_LT(*std::min_element(confidences.begin(), confidences.end()), 1.); // some split votes
+  // Four threads predict the whole set at once, two of them from copies.
+  const Svm copy = a;
+  std::vector<std::vector<std::size_t>> thread_labels(4, std::vector<std::size_t>(labels.size()));
+  std::vector<std::vector<double>> thread_confidences(4, std::vector<double>(labels.size()));
+  std::vector<std::thread> threads;
+  for(std::size_t t = 0; t < 4; ++t)
+    threads.emplace_back([&, t] {
+      const Svm& svm = t % 2 == 0 ? a : copy;
+      for(std::size_t i = 0; i < labels.size(); ++i)
+        thread_labels[t][i] = svm.predict(test.features[i], thread_confidences[t][i]);
+    });
+  for(auto& t : threads)
+    t.join();
+  for(std::size_t t = 0; t < 4; ++t) {
+    EXPECT_EQ(thread_labels[t], labels);
+    EXPECT_EQ(thread_confidences[t], confidences);
+  }
+}
+
+TEST(ObjectClassifiers, SvmCopiesShareTheModel)
+{
+  const Data one = gaussian_classes(3, 30, 4, 1., 101, 102), other = gaussian_classes(2, 30, 4, 1., 103, 104);
+  Svm svm;
+  svm.train(one.features, one.labels, 3);
+  const Svm copy = svm;
+  const std::string before = text(svm);
+  EXPECT_EQ(text(copy), before);
+  // Training the original again replaces its model; the copy keeps the one it shares.
+  svm.train(other.features, other.labels, 2);
+  EXPECT_EQ(svm.number_of_classes(), 2u);
+  EXPECT_EQ(text(copy), before);
+  EXPECT_EQ(copy.number_of_classes(), 3u);
+  EXPECT_GE(accuracy(copy, one), 0.95);
+}
+
+TEST(ObjectClassifiers, SvmNeverPredictsAClassAbsentFromTheTrainingLabels)
+{
+  // Five classes declared, classes 1 and 3 absent.
+  const Data data = gaussian_classes(5, 30, 6, 1.5, 111, 112), test = gaussian_classes(5, 60, 6, 1.5, 111, 113);
+  Data present;
+  for(std::size_t i = 0; i < data.labels.size(); ++i)
+    if(data.labels[i] % 2 == 0)
+      present.features.push_back(data.features[i]), present.labels.push_back(data.labels[i]);
+  Svm svm;
+  svm.train(present.features, present.labels, 5);
+  EXPECT_EQ(svm.number_of_classes(), 5u);
+  std::size_t seen[5] = {0, 0, 0, 0, 0};
+  for(const auto& f : test.features) {
+    double c = -1;
+    const std::size_t label = svm.predict(f, c);
+    ASSERT_LT(label, 5u);
+    ++seen[label];
+    EXPECT_TRUE(c == 0.5 || c == 1.) << c; // three classes present: two duels
+  }
+  EXPECT_EQ(seen[1] + seen[3], 0u);
+  EXPECT_GT(seen[0] * seen[2] * seen[4], 0u);
+  Svm loaded;
+  std::istringstream is(text(svm));
+  loaded.load(is);
+  expect_same_predictions(svm, loaded, test.features);
+  // A single class present: always that class, with confidence 1.
+  svm.train(present.features, Labels(present.labels.size(), 3), 5);
+  double c = 0;
+  EXPECT_EQ(svm.predict(test.features[0], c), 3u);
+  EXPECT_EQ(c, 1.);
+  EXPECT_EQ(svm.number_of_support_vectors(), 0u);
+}
+
+TEST(ObjectClassifiers, SvmBadInputIsRefused)
+{
+  Svm svm;
+  expect_bad_training_refused(svm);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(Svm(0.), Bad_input);
+  EXPECT_THROW(Svm(-1.), Bad_input);
+  EXPECT_THROW(Svm(2.5, 0), Bad_input);
+  EXPECT_THROW(Svm(2.5, 5, -1.), Bad_input);
+  EXPECT_THROW(Svm(2.5, 5, 0, nan), Bad_input);
+  EXPECT_THROW(Svm(2.5, 5, 0, 1, -1.), Bad_input);
+  // A kernel whose values overflow libsvm's float cache is refused, the model kept.
+  const Data data = gaussian_classes(2, 20, 3, 1., 61, 62);
+  Svm huge(2.5, 5, 1e10);
+  EXPECT_THROW(huge.train(data.features, data.labels, 2), Bad_input); // kernel values up to ~1e60
+  EXPECT_FALSE(huge.is_trained());
+  // Identical vectors with different labels: an answer, no crash.
+  const Features same(12, std::vector<double>{1., 2., 3.});
+  Labels labels(12);
+  for(std::size_t i = 0; i < labels.size(); ++i)
+    labels[i] = i % 3 == 0 ? 1 : 0;
+  svm.train(same, labels, 2);
+  double c = 0;
+  EXPECT_LT(svm.predict({1., 2., 3.}, c), 2u);
+  EXPECT_EQ(c, 1.);
+}
+
+TEST(ObjectClassifiers, SvmBadModelFilesAreRefused)
+{
+  const Data data = gaussian_classes(2, 8, 2, 1., 71, 72);
+  PSOR::Knn_object_classifier knn(3);
+  knn.train(data.features, data.labels, 2);
+  Svm svm;
+  expect_bad_files_refused(svm, text(knn));
+  const std::string good = text(svm);
+  expect_load_refused(svm, replace_first(good, "degree 5", "degree 0"));
+  expect_load_refused(svm, replace_first(good, "C 2.5", "C -2.5"));
+  expect_load_refused(svm, replace_first(good, "class_weights uniform", "class_weights heavy"));
+  expect_load_refused(svm, replace_first(good, "feature_weight_exponent 2", "feature_weight_exponent -2"));
+  expect_load_refused(svm, replace_first(good, "kernel_gamma ", "kernel_gamma 0 "));
+  expect_load_refused(svm, replace_first(good, "feature_weights ", "feature_weights -1 "));
+  expect_load_refused(svm, replace_first(good, "labels 2 0 1", "labels 2 1 0"));   // not increasing
+  expect_load_refused(svm, replace_first(good, "labels 2 0 1", "labels 2 0 2"));   // class >= classes
+  expect_load_refused(svm, replace_first(good, "labels 2 0 1", "labels 3 0 1 1")); // more than classes
+  expect_load_refused(svm, replace_first(good, "per_class ", "per_class 1"));      // wrong sum
+  expect_load_refused(svm, replace_first(good, "support_vectors ", "support_vectors 1"));
+  expect_load_refused(svm, replace_first(good, "\nend\n", "\n1 2 3\nend\n"));      // a vector too many
+  // Its own file in another classifier: another kind.
+  expect_load_refused(knn, good);
+}
+
+#endif // CGAL_SHAPE_ANALYSIS_USE_LIBSVM
 
 } // namespace

@@ -19,6 +19,7 @@
 #include <CGAL/Classification/ETHZ/internal/random-forest/forest.hpp>
 #include <CGAL/Classification/ETHZ/internal/random-forest/node-gini.hpp>
 
+#include <CGAL/Point_set_object_recognition/internal/Classifier_data.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
 
 #include <algorithm>
@@ -46,7 +47,7 @@ using CGAL::Shape_analysis::Bad_input;
 
 A classifier of objects from their feature vectors: every feature vector has the same dimension
 `d`, every label is a class index in `[0, number_of_classes)`. Models:
-`Knn_object_classifier`, `Random_forest_object_classifier`.
+`Knn_object_classifier`, `Random_forest_object_classifier`, `Svm_object_classifier` (libsvm).
 
 - `void train(const std::vector<std::vector<double>>& features, const std::vector<std::size_t>& labels, std::size_t number_of_classes)`
   learns from `features[i]` labelled `labels[i]`, replacing any previous model. Throws
@@ -69,7 +70,7 @@ A classifier of objects from their feature vectors: every feature vector has the
 digits and floats with 9, so that a loaded model is bit-identical):
 \code
 CGAL_Point_set_object_recognition_classifier 1
-kind knn | random_forest
+kind knn | random_forest | svm
 dimension <d>
 classes <c>
 mean <d values>          (the standardization: x' = (x - mean) / scale, per coordinate)
@@ -81,188 +82,12 @@ random_forest: max_depth <m> min_samples <s> seed <seed>
        split <feature index> <threshold>   (x'[feature] > threshold goes right, else left;
                                             the left subtree follows, then the right one)
        leaf <c class probabilities>
+svm: C <C> degree <p> gamma <0: 1/d> coef0 <r> feature_weight_exponent <a> class_weights <w>
+     kernel_gamma <g> feature_weights <d> labels <k> <k classes> rho <k (k - 1) / 2> support_vectors
+     <l> per_class <k counts>, then l lines: <k - 1 coefficients> <d coordinates> (Svm_object_classifier)
 end
 \endcode
 */
-
-namespace internal {
-
-// Feature vectors checked, their dimension, the number of classes and the standardization.
-class Classifier_data
-{
-public:
-  std::size_t dimension = 0, classes = 0;
-  std::vector<double> mean, scale;
-
-  bool trained() const { return dimension != 0; }
-
-  // Checks the training input (throws Bad_input) and computes the standardization.
-  void prepare(const std::vector<std::vector<double>>& features, const std::vector<std::size_t>& labels,
-               std::size_t number_of_classes)
-  {
-    if(features.empty())
-      throw Bad_input("classifier training: no feature vector");
-    if(features.size() != labels.size())
-      throw Bad_input("classifier training: " + std::to_string(features.size()) + " feature vectors but " +
-                      std::to_string(labels.size()) + " labels");
-    if(number_of_classes == 0)
-      throw Bad_input("classifier training: the number of classes is 0");
-    const std::size_t d = features.front().size();
-    if(d == 0)
-      throw Bad_input("classifier training: feature vectors of dimension 0");
-    for(std::size_t i = 0; i < features.size(); ++i) {
-      if(features[i].size() != d)
-        throw Bad_input("classifier training: feature vector " + std::to_string(i) + " has dimension " +
-                        std::to_string(features[i].size()) + ", feature vector 0 has " + std::to_string(d));
-      if(labels[i] >= number_of_classes)
-        throw Bad_input("classifier training: label " + std::to_string(labels[i]) + " of feature vector " +
-                        std::to_string(i) + " is not below the number of classes " +
-                        std::to_string(number_of_classes));
-      for(double x : features[i])
-        if(!std::isfinite(x))
-          throw Bad_input("classifier training: feature vector " + std::to_string(i) + " has a value that is not finite");
-    }
-    Classifier_data out;
-    out.dimension = d;
-    out.classes = number_of_classes;
-    out.mean.assign(d, 0.);
-    out.scale.assign(d, 0.);
-    for(const auto& f : features)
-      for(std::size_t j = 0; j < d; ++j)
-        out.mean[j] += f[j];
-    for(double& m : out.mean)
-      m /= double(features.size());
-    for(const auto& f : features)
-      for(std::size_t j = 0; j < d; ++j)
-        out.scale[j] += (f[j] - out.mean[j]) * (f[j] - out.mean[j]);
-    for(double& s : out.scale) {
-      s = std::sqrt(s / double(features.size()));
-      if(!(s > 0) || !std::isfinite(s))
-        s = 1.;
-    }
-    *this = std::move(out);
-  }
-
-  // The standardized vector; throws Bad_input on a wrong dimension or a value that is not finite.
-  std::vector<double> standardize(const std::vector<double>& f) const
-  {
-    if(!trained())
-      throw Bad_input("classifier: predict() before train() or load()");
-    if(f.size() != dimension)
-      throw Bad_input("classifier: feature vector of dimension " + std::to_string(f.size()) +
-                      ", the classifier was trained with dimension " + std::to_string(dimension));
-    std::vector<double> out(dimension);
-    for(std::size_t j = 0; j < dimension; ++j) {
-      if(!std::isfinite(f[j]))
-        throw Bad_input("classifier: feature value " + std::to_string(j) + " is not finite");
-      out[j] = (f[j] - mean[j]) / scale[j];
-    }
-    return out;
-  }
-
-  void write(std::ostream& os, const char* kind) const
-  {
-    if(!trained())
-      throw Bad_input("classifier: save() before train() or load()");
-    os << "CGAL_Point_set_object_recognition_classifier 1\n"
-       << "kind " << kind << "\ndimension " << dimension << "\nclasses " << classes << "\nmean";
-    os << std::setprecision(17);
-    for(double m : mean)
-      os << ' ' << m;
-    os << "\nscale";
-    for(double s : scale)
-      os << ' ' << s;
-    os << '\n';
-  }
-};
-
-// Strict reading of the tokens of a model file: every failure throws Bad_input.
-class Model_reader
-{
-  std::istream& m_is;
-
-public:
-  explicit Model_reader(std::istream& is) : m_is(is) {}
-
-  [[noreturn]] static void fail(const std::string& what)
-  {
-    throw Bad_input("classifier model file: " + what);
-  }
-
-  std::string token(const std::string& what)
-  {
-    std::string t;
-    if(!(m_is >> t))
-      fail("truncated, " + what + " is missing");
-    return t;
-  }
-
-  void expect(const std::string& word)
-  {
-    const std::string t = token("'" + word + "'");
-    if(t != word)
-      fail("expected '" + word + "', read '" + t + "'");
-  }
-
-  double real(const std::string& what)
-  {
-    const std::string t = token(what);
-    char* end = nullptr;
-    const double x = std::strtod(t.c_str(), &end);
-    if(end == t.c_str() || *end != '\0' || !std::isfinite(x))
-      fail(what + " '" + t + "' is not a finite number");
-    return x;
-  }
-
-  std::size_t count(const std::string& what, std::size_t at_most)
-  {
-    const std::string t = token(what);
-    if(t.empty() || t.size() > 18 || t.find_first_not_of("0123456789") != std::string::npos)
-      fail(what + " '" + t + "' is not a non-negative integer");
-    const std::size_t n = std::size_t(std::strtoull(t.c_str(), nullptr, 10));
-    if(n > at_most)
-      fail(what + " " + t + " is over " + std::to_string(at_most));
-    return n;
-  }
-
-  // Reads the first line, the kind and the standardization.
-  Classifier_data header(const std::string& kind)
-  {
-    const std::string magic = "CGAL_Point_set_object_recognition_classifier";
-    std::string line;
-    if(!std::getline(m_is, line))
-      fail("empty, expected the line '" + magic + " 1'");
-    if(!line.empty() && line.back() == '\r')
-      line.pop_back();
-    if(line.compare(0, magic.size() + 1, magic + " ") != 0)
-      fail("the first line is not '" + magic + " 1', this is not a classifier model");
-    if(line != magic + " 1")
-      fail("unsupported format version '" + line.substr(magic.size() + 1) + "' (this library reads version 1)");
-    expect("kind");
-    const std::string k = token("the kind");
-    if(k != kind)
-      fail("a model of kind '" + k + "', expected '" + kind + "'");
-    Classifier_data data;
-    expect("dimension");
-    data.dimension = count("the dimension", 1u << 20);
-    expect("classes");
-    data.classes = count("the number of classes", 1u << 20);
-    if(data.dimension == 0 || data.classes == 0)
-      fail("dimension and number of classes must be positive");
-    expect("mean");
-    for(std::size_t j = 0; j < data.dimension; ++j)
-      data.mean.push_back(real("a mean"));
-    expect("scale");
-    for(std::size_t j = 0; j < data.dimension; ++j) {
-      data.scale.push_back(real("a scale"));
-      if(!(data.scale.back() > 0))
-        fail("a scale is not positive");
-    }
-    return data;
-  }
-};
-
-} // namespace internal
 
 /*!
 \ingroup PkgPointSetObjectRecognitionRef
@@ -481,10 +306,21 @@ class Random_forest_object_classifier
   unsigned int m_seed;
   std::shared_ptr<const Model> m_model;
 
-  static std::size_t count_nodes(const Node& n) { return n.is_leaf ? 1 : 1 + count_nodes(*n.left) + count_nodes(*n.right); }
+  // A node that found no split (every coordinate tried was constant over its vectors) has feature
+  // -1 and sends every vector left: it is written as its left subtree, which predicts the same.
+  static std::size_t count_nodes(const Node& n)
+  {
+    if(!n.is_leaf && n.splitter.feature < 0)
+      return count_nodes(*n.left);
+    return n.is_leaf ? 1 : 1 + count_nodes(*n.left) + count_nodes(*n.right);
+  }
 
   static void write_node(std::ostream& os, const Node& n)
   {
+    if(!n.is_leaf && n.splitter.feature < 0) {
+      write_node(os, *n.left);
+      return;
+    }
     if(n.is_leaf) {
       os << "leaf";
       for(float p : n.node_dist)
