@@ -19,6 +19,10 @@
 #include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/read_point_set.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
+#ifdef CGAL_SHAPE_ANALYSIS_USE_OSMIUM
+#include <CGAL/Point_set_object_recognition/read_street_map.h>
+#include <Shape_analysis_support/Urban_osm.h>
+#endif
 
 #include <algorithm>
 #include <filesystem>
@@ -43,6 +47,10 @@ struct Scene_options
   std::string output, objects, report;
   SAS::Urban_scene_options scene;
   std::string sensor = "profile";
+  // Road users and vegetation per 100 m; negative: the sensor's default (none for profile).
+  double pedestrians = -1, cyclists = -1, lane_cars = -1, vegetation = -1;
+  std::string streets, crs = "EPSG:32618";  // the street's OpenStreetMap file, its UTM zone
+  std::vector<double> scan_origin{583000, 4507000}; // the UTM coordinates of the scan's (0, 0)
   bool quiet = false, verbose = false;
 };
 
@@ -79,8 +87,27 @@ int run_scene(const Scene_options& o)
     outputs.add_output(o.objects, "ground-truth objects");
   }
   outputs.add_optional_output(o.report, "report");
+#ifdef CGAL_SHAPE_ANALYSIS_USE_OSMIUM
+  if(!o.streets.empty())
+    outputs.add_output(o.streets, "street map");
+  const CGAL::Point_set_object_recognition::Utm_zone zone = [&] {
+    try {
+      return CGAL::Point_set_object_recognition::parse_utm_crs(o.crs);
+    } catch(const CGAL::Shape_analysis::Bad_input& e) {
+      throw Usage_error(std::string("--crs: ") + e.what());
+    }
+  }();
+#else
+  if(!o.streets.empty())
+    throw Usage_error("--streets: this build has no GeographicLib and libosmium");
+#endif
   SAS::Urban_scene_options so = o.scene;
-  if(o.sensor == "rotating") { // a car's roof, a Velodyne's reach
+  const bool rotating = o.sensor == "rotating"; // with road users and vegetation by default
+  so.pedestrians_per_100m = o.pedestrians >= 0 ? o.pedestrians : rotating ? 10. : 0.;
+  so.cyclists_per_100m = o.cyclists >= 0 ? o.cyclists : rotating ? 4. : 0.;
+  so.lane_cars_per_100m = o.lane_cars >= 0 ? o.lane_cars : rotating ? 5. : 0.;
+  so.vegetation_per_100m = o.vegetation >= 0 ? o.vegetation : rotating ? 12. : 0.;
+  if(rotating) { // a car's roof, a Velodyne's reach
     so.rotating_sensor = true;
     so.scanner_height = 1.73;
     so.max_range = 100;
@@ -123,6 +150,12 @@ int run_scene(const Scene_options& o)
     if(!CGAL::IO::write_PLY(out, ps, "written by shape_analysis points " + o.command + " (CGAL Global Shape Analysis)"))
       throw Cli_error("cannot write " + o.output);
   });
+#ifdef CGAL_SHAPE_ANALYSIS_USE_OSMIUM
+  if(!o.streets.empty())
+    outputs.stage(o.streets, false, [&](std::ostream& out) {
+      SAS::write_street_osm(out, scene, zone.zone, zone.north, {{o.scan_origin[0], o.scan_origin[1]}});
+    });
+#endif
   std::size_t object_points = 0;
   std::map<int, std::size_t> scanned;
   for(const SAS::Urban_scan_point& p : scan.points)
@@ -140,6 +173,10 @@ int run_scene(const Scene_options& o)
     parameters["length"] = so.street_length;
     parameters["points"] = so.target_points;
     parameters["objects_per_100m"] = so.objects_per_100m;
+    parameters["pedestrians_per_100m"] = so.pedestrians_per_100m;
+    parameters["cyclists_per_100m"] = so.cyclists_per_100m;
+    parameters["lane_cars_per_100m"] = so.lane_cars_per_100m;
+    parameters["vegetation_per_100m"] = so.vegetation_per_100m;
     parameters["noise"] = so.range_noise;
     parameters["airborne"] = so.airborne;
     parameters["sensor"] = o.sensor;
@@ -528,8 +565,9 @@ void add_points_command(CLI::App& app, std::function<int()>& run)
     s->command = name;
     CLI::App* scene = points->add_subcommand(
       name, name == "generate"
-              ? "Generate a street (road, curbs, sloped ground, buildings, trees and small objects of 16 "
-                "classes in clutter) scanned by a simulated mobile LIDAR; per point its object id and class."
+              ? "Generate a street (road, curbs, sloped ground, buildings, trees and small objects of the "
+                "thesis' 16 classes in clutter; with --sensor rotating also pedestrians, cyclists, cars in the "
+                "lanes and vegetation) scanned by a simulated LIDAR; per point its object id and class."
               : "The same as 'points generate', with --objects for --truth.");
     scene->add_option("-o,--output", s->output,
                       "The scan (.ply: x y z double, instance and label int, intensity float, colours by class)")
@@ -537,6 +575,14 @@ void add_points_command(CLI::App& app, std::function<int()>& run)
     scene->add_option(name == "generate" ? "--truth" : "--objects", s->objects,
                       "The ground-truth objects (.json: id, class, location, height, bbox, scanned_points)");
     scene->add_option("--report", s->report, "JSON report (parameters, counts, seconds)");
+    scene->add_option("--streets", s->streets,
+                      "The street's map (.osm: OpenStreetMap XML; the street, two cross streets, sidewalks as "
+                      "footways, building footprints), the scan's (0,0) at --scan-origin in the UTM zone --crs");
+    scene->add_option("--crs", s->crs, "The UTM zone of --streets, EPSG:326zz or EPSG:327zz")->capture_default_str();
+    scene->add_option("--scan-origin", s->scan_origin, "The UTM easting,northing of the scan's (0,0)")
+      ->expected(2)
+      ->delimiter(',')
+      ->capture_default_str();
     SAS::Urban_scene_options& so = s->scene;
     scene->add_option("--length", so.street_length, "Length of the street in metres")->capture_default_str();
     scene->add_option("--points", so.target_points, "Number of mobile LIDAR points wanted (roughly)")->capture_default_str();
@@ -551,6 +597,22 @@ void add_points_command(CLI::App& app, std::function<int()>& run)
       ->capture_default_str();
     scene->add_option("--sweep-spacing", so.sweep_spacing, "Metres of travel between turns of the rotating sensor")
       ->capture_default_str();
+    const auto density = [&](const char* flag, double& value, const char* what, const char* rotating) {
+      scene->add_option(flag, value, std::string(what) + " per 100 m of street (default: 0 with --sensor profile, " +
+                                       rotating + " with --sensor rotating)")
+        ->check(CLI::Range(0.0, 100.0));
+    };
+    density("--pedestrians-per-100m", s->pedestrians,
+            "Pedestrians (class 'pedestrian', 1.5-1.9 m) walking or standing on the sidewalks or crossing "
+            "the road,", "10");
+    density("--cyclists-per-100m", s->cyclists,
+            "Cyclists (class 'cyclist') riding along the lanes' edges, or parked bicycles on the sidewalks,", "4");
+    density("--lane-cars-per-100m", s->lane_cars,
+            "Cars in the driving lanes (class 'car'; kept off the sensor's own path), besides the parked "
+            "ones,", "5");
+    density("--vegetation-per-100m", s->vegetation,
+            "Hedges, bushes and low shrubs (background class 'vegetation'; any > 0 also makes tree crowns "
+            "irregular),", "12");
     scene->add_option("--seed", so.seed, "Random seed (same seed, same scene)")->capture_default_str();
     scene->add_option("--threads", so.number_of_threads, "Largest number of threads (0: all cores)")->capture_default_str();
     scene->add_flag("-q,--quiet", s->quiet, "No progress on stderr");

@@ -81,6 +81,15 @@ TEST(UrbanScene, ClassNames)
   EXPECT_EQ(std::string(PSOR::object_class_name(PSOR::GROUND)), "ground");
   EXPECT_EQ(std::string(PSOR::object_class_name(PSOR::CAR)), "car");
   EXPECT_FALSE(PSOR::is_object_class(PSOR::TREE));
+  // The road users come after the thesis' classes, whose numbers stay; vegetation is background.
+  EXPECT_EQ(int(PSOR::A_FRAME_SIGN), 25);
+  EXPECT_EQ(PSOR::number_of_thesis_classes, 16);
+  EXPECT_EQ(PSOR::number_of_object_classes, 18);
+  EXPECT_EQ(std::string(PSOR::object_class_name(PSOR::PEDESTRIAN)), "pedestrian");
+  EXPECT_EQ(std::string(PSOR::object_class_name(PSOR::CYCLIST)), "cyclist");
+  EXPECT_EQ(std::string(PSOR::object_class_name(PSOR::VEGETATION)), "vegetation");
+  EXPECT_FALSE(PSOR::is_object_class(PSOR::VEGETATION));
+  EXPECT_FALSE(PSOR::is_object_class(PSOR::CYCLIST + 1));
 }
 
 TEST(UrbanScene, EveryClassInALongStreet)
@@ -91,7 +100,9 @@ TEST(UrbanScene, EveryClassInALongStreet)
   std::set<int> classes;
   for(const auto& b : sc.objects)
     classes.insert(b.object_class);
-  EXPECT_EQ(classes.size(), std::size_t(PSOR::number_of_object_classes));
+  // The thesis' classes, and no road users in the default scene.
+  EXPECT_EQ(classes.size(), std::size_t(PSOR::number_of_thesis_classes));
+  EXPECT_EQ(classes.count(PSOR::PEDESTRIAN) + classes.count(PSOR::CYCLIST), 0u);
   // The requested density is met (placement may fail rarely).
   EXPECT_GE(sc.objects.size(), std::size_t(0.9 * 30 * 6));
   for(std::size_t i = 0; i < sc.objects.size(); ++i)
@@ -448,4 +459,235 @@ TEST(UrbanScene, RotatingSensorRingsRangeAndOcclusion)
   o = one_sweep();
   o.airborne = true;
   EXPECT_THROW(PSOR::scan_urban_scene(s.scene, o), CGAL::Shape_analysis::Bad_input);
+}
+
+namespace {
+
+// FNV-1a over the bytes of every point's coordinates, instance, label and intensity.
+std::uint64_t fingerprint(const PSOR::Urban_scan& s)
+{
+  std::uint64_t h = 14695981039346656037ull;
+  const auto add = [&](const void* p, std::size_t n) {
+    for(std::size_t i = 0; i < n; ++i) {
+      h ^= static_cast<const unsigned char*>(p)[i];
+      h *= 1099511628211ull;
+    }
+  };
+  for(const PSOR::Urban_scan_point& p : s.points) {
+    add(&p.x, 8), add(&p.y, 8), add(&p.z, 8);
+    add(&p.instance, 4), add(&p.label, 4), add(&p.intensity, 4);
+  }
+  return h;
+}
+
+// A rotating sensor (32 beams, KITTI's height) on a 120 m street with the road users and the
+// vegetation of 'points generate --sensor rotating'.
+PSOR::Urban_scene_options road_user_options()
+{
+  PSOR::Urban_scene_options o;
+  o.seed = 11;
+  if(const char* seed = std::getenv("URBAN_SCENE_SEED"))
+    o.seed = std::stoull(seed);
+  o.street_length = 120.;
+  o.rotating_sensor = true;
+  o.beams = 32;
+  o.lowest_elevation = -25.;
+  o.highest_elevation = 3.;
+  o.azimuth_step = 0.25;
+  o.scanner_height = 1.73;
+  o.max_range = 100.;
+  o.pedestrians_per_100m = 10.;
+  o.cyclists_per_100m = 5.;
+  o.lane_cars_per_100m = 5.;
+  o.vegetation_per_100m = 12.;
+  return o;
+}
+
+const Scanned& road_user_scan()
+{
+  static const Scanned s = run(road_user_options());
+  return s;
+}
+
+} // namespace
+
+// Scenes with default options are the ones made before road users and vegetation existed, point
+// for point (figures recorded with the generator of then).
+TEST(UrbanScene, DefaultScenesUnchanged)
+{
+  PSOR::Urban_scene_options o;
+  o.seed = 7, o.street_length = 120., o.target_points = 100000;
+  Scanned a = run(o);
+  EXPECT_EQ(a.scene.triangles.size(), 24436u);
+  EXPECT_EQ(a.scene.objects.size(), 36u);
+  EXPECT_EQ(a.scan.points.size(), 99615u);
+  EXPECT_EQ(fingerprint(a.scan), 13836364222487327348ull);
+  PSOR::Urban_scene_options r;
+  r.seed = 7, r.street_length = 60., r.rotating_sensor = true, r.azimuth_step = 0.4, r.beams = 32;
+  Scanned b = run(r);
+  EXPECT_EQ(b.scene.triangles.size(), 15392u);
+  EXPECT_EQ(b.scene.objects.size(), 20u);
+  EXPECT_EQ(b.scan.points.size(), 168920u);
+  EXPECT_EQ(fingerprint(b.scan), 7878854314894391714ull);
+}
+
+// Pedestrians and cyclists of realistic heights on the road and on the sidewalks, cars in the
+// lanes, all seen by the sensor; vegetation scanned as background.
+TEST(UrbanScene, RoadUsersAndVegetation)
+{
+  const Scanned& s = road_user_scan();
+  const PSOR::Urban_scene& sc = s.scene;
+  const double R = sc.road_half_width;
+  std::map<int, std::size_t> points; // per object id
+  std::size_t vegetation = 0;
+  for(const PSOR::Urban_scan_point& p : s.scan.points) {
+    if(p.instance > 0)
+      ++points[p.instance];
+    else
+      EXPECT_FALSE(PSOR::is_object_class(p.label));
+    if(p.label == PSOR::VEGETATION) {
+      ++vegetation;
+      ASSERT_EQ(p.instance, 0);
+    }
+  }
+  EXPECT_GT(vegetation, 2000u);
+  std::size_t pedestrians = 0, cyclists = 0, riders = 0, lane_cars = 0, on_road = 0, on_sidewalk = 0;
+  std::size_t seen_pedestrians = 0, seen_cyclists = 0;
+  for(std::size_t i = 0; i < sc.objects.size(); ++i) {
+    const PSOR::Urban_object& b = sc.objects[i];
+    ASSERT_EQ(b.id, int(i + 1));
+    const bool road = std::abs(b.y) < R;
+    const double length = (std::max)(b.bbox.xmax() - b.bbox.xmin(), b.bbox.ymax() - b.bbox.ymin());
+    EXPECT_NEAR(b.z, sc.ground_height(b.x, b.y), 1e-9);
+    if(b.object_class == PSOR::PEDESTRIAN) {
+      ++pedestrians;
+      seen_pedestrians += points[b.id] >= 20 ? 1 : 0;
+      EXPECT_GT(b.height, 1.38) << b.id;
+      EXPECT_LT(b.height, 1.95) << b.id;
+      EXPECT_LT(std::abs(b.y), sc.facade_y);
+      (road ? on_road : on_sidewalk) += 1;
+    } else if(b.object_class == PSOR::CYCLIST) {
+      ++cyclists;
+      seen_cyclists += points[b.id] >= 20 ? 1 : 0;
+      EXPECT_GT(length, 1.6) << b.id;
+      EXPECT_LT(length, 2.) << b.id;
+      if(road) { // riding
+        ++riders, ++on_road;
+        EXPECT_GT(b.height, 1.4) << b.id;
+        EXPECT_LT(b.height, 2.) << b.id;
+      } else { // parked
+        ++on_sidewalk;
+        EXPECT_GT(b.height, 0.85) << b.id;
+        EXPECT_LT(b.height, 1.3) << b.id;
+        EXPECT_LT(std::abs(b.y), sc.facade_y);
+      }
+    } else if(b.object_class == PSOR::CAR && std::abs(b.y) < 3.5) {
+      ++lane_cars, ++on_road;
+    }
+  }
+  EXPECT_GE(pedestrians, 11u); // 12 wanted
+  EXPECT_GE(cyclists, 5u);     // 6 wanted
+  EXPECT_GE(riders, 3u);       // 4 wanted
+  EXPECT_GE(lane_cars, 4u);    // 6 wanted
+  EXPECT_GE(on_road, 8u);
+  EXPECT_GE(on_sidewalk, 6u);
+  EXPECT_GE(double(seen_pedestrians), 0.7 * double(pedestrians));
+  EXPECT_GE(double(seen_cyclists), 0.6 * double(cyclists));
+}
+
+// Road users keep off the sensor's path, do not cut into each other or into the street
+// furniture, and their points lie on them.
+TEST(UrbanScene, RoadUsersPlacedClear)
+{
+  const Scanned& s = road_user_scan();
+  const PSOR::Urban_scene_options o = road_user_options();
+  const PSOR::Urban_scene& sc = s.scene;
+  for(const PSOR::Urban_object& b : sc.objects)
+    for(double x = 0.5 * o.sweep_spacing; b.height < 2.5 && x < o.street_length; x += o.sweep_spacing)
+      EXPECT_FALSE(b.bbox.xmin() < x + 2.5 && b.bbox.xmax() > x - 2.5 && b.bbox.ymin() < o.lane_offset + 1 &&
+                   b.bbox.ymax() > o.lane_offset - 1)
+        << "object " << b.id << " on the sensor's path";
+  // Pedestrians are compact (their boxes are tight): no box cuts into a neighbour's by more than
+  // the swing of an arm.
+  for(const PSOR::Urban_object& a : sc.objects)
+    for(const PSOR::Urban_object& b : sc.objects)
+      if(a.id < b.id && a.object_class == PSOR::PEDESTRIAN && b.height < 2.)
+        EXPECT_GT(box_gap_xy(a.bbox, b.bbox), -0.15) << a.id << ' ' << b.id;
+  const double tol = 6 * o.range_noise + 0.01;
+  std::size_t checked = 0;
+  for(const PSOR::Urban_scan_point& p : s.scan.points)
+    if(p.instance > 0) {
+      const PSOR::Urban_object& b = sc.objects[std::size_t(p.instance - 1)];
+      ASSERT_EQ(p.label, b.object_class);
+      if(b.object_class < PSOR::PEDESTRIAN)
+        continue;
+      ++checked;
+      ASSERT_TRUE(p.x > b.bbox.xmin() - tol && p.x < b.bbox.xmax() + tol && p.y > b.bbox.ymin() - tol &&
+                  p.y < b.bbox.ymax() + tol && p.z > b.bbox.zmin() - tol && p.z < b.bbox.zmax() + tol)
+        << "object " << b.id;
+    }
+  EXPECT_GT(checked, 1000u);
+}
+
+// The road users and the vegetation come from the seed alone, not from the thread count; the
+// street furniture of the default scene stays where it was; each density has its own stream.
+TEST(UrbanScene, RoadUsersDeterministic)
+{
+  PSOR::Urban_scene_options o = road_user_options();
+  o.street_length = 50.;
+  o.azimuth_step = 0.5;
+  o.number_of_threads = 1;
+  const Scanned a = run(o);
+  o.number_of_threads = 2;
+  const Scanned b = run(o);
+  ASSERT_EQ(a.scan.points.size(), b.scan.points.size());
+  EXPECT_EQ(fingerprint(a.scan), fingerprint(b.scan));
+  ASSERT_EQ(a.scene.triangles.size(), b.scene.triangles.size());
+  // Without road users and vegetation: the same furniture, objects 1 to n, as in `a`.
+  PSOR::Urban_scene_options plain = o;
+  plain.pedestrians_per_100m = plain.cyclists_per_100m = plain.lane_cars_per_100m = plain.vegetation_per_100m = 0.;
+  const PSOR::Urban_scene c = PSOR::make_urban_scene(plain);
+  ASSERT_LT(c.objects.size(), a.scene.objects.size());
+  for(std::size_t i = 0; i < c.objects.size(); ++i) {
+    EXPECT_EQ(c.objects[i].object_class, a.scene.objects[i].object_class);
+    EXPECT_EQ(c.objects[i].x, a.scene.objects[i].x);
+  }
+  // More cyclists do not move the pedestrians that fit anyway.
+  PSOR::Urban_scene_options more = o;
+  more.cyclists_per_100m = 0.;
+  const PSOR::Urban_scene d = PSOR::make_urban_scene(more);
+  std::size_t same = 0, pedestrians = 0;
+  for(const PSOR::Urban_object& p : a.scene.objects)
+    if(p.object_class == PSOR::PEDESTRIAN) {
+      ++pedestrians;
+      for(const PSOR::Urban_object& q : d.objects)
+        same += q.object_class == PSOR::PEDESTRIAN && q.x == p.x && q.y == p.y ? 1 : 0;
+    }
+  EXPECT_GE(2 * same, pedestrians);
+  // Bad densities.
+  o.pedestrians_per_100m = -1.;
+  EXPECT_THROW(PSOR::make_urban_scene(o), CGAL::Shape_analysis::Bad_input);
+  o = road_user_options();
+  o.vegetation_per_100m = 1000.;
+  EXPECT_THROW(PSOR::make_urban_scene(o), CGAL::Shape_analysis::Bad_input);
+}
+
+// Road users with the profile scanners (asked for explicitly): off the centre line.
+TEST(UrbanScene, RoadUsersWithProfileScanners)
+{
+  PSOR::Urban_scene_options o = base_options(60000);
+  o.street_length = 60.;
+  o.pedestrians_per_100m = 20.;
+  o.cyclists_per_100m = 10.;
+  o.lane_cars_per_100m = 10.;
+  const Scanned s = run(o);
+  std::size_t road_users = 0, pedestrian_points = 0;
+  for(const PSOR::Urban_object& b : s.scene.objects) {
+    road_users += b.object_class >= PSOR::PEDESTRIAN ? 1 : 0;
+    EXPECT_FALSE(b.bbox.ymin() < 0.5 && b.bbox.ymax() > -0.5) << "object " << b.id << " on the centre line";
+  }
+  for(const PSOR::Urban_scan_point& p : s.scan.points)
+    pedestrian_points += p.label == PSOR::PEDESTRIAN ? 1 : 0;
+  EXPECT_GE(road_users, 15u);
+  EXPECT_GT(pedestrian_points, 50u);
 }

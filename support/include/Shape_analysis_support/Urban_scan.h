@@ -44,6 +44,9 @@ inline float reflectivity(int c)
   case TREE: return 0.35f;
   case SIGN: return 0.95f;
   case CAR: return 0.6f;
+  case VEGETATION: return 0.4f;
+  case PEDESTRIAN: return 0.3f;
+  case CYCLIST: return 0.4f;
   default: return 0.5f;
   }
 }

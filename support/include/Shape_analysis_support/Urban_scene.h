@@ -16,7 +16,8 @@
 //
 // Frame: x along the street (scanner path from x = 0 to street_length), y across (road centre at
 // y = 0), z up. Objects stand on the sidewalks (|y| in [road_half_width, facade_y]) or, for cars,
-// on the road next to the curb; buildings span |y| in [facade_y, back_y].
+// on the road next to the curb; buildings span |y| in [facade_y, back_y]. Road users (pedestrians,
+// cyclists, cars in the lanes) and vegetation are off by default (Urban_road_users.h).
 
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/internal/Random.h>
@@ -35,26 +36,32 @@
 namespace CGAL {
 namespace Shape_analysis_support {
 
-// Kinds of surfaces: background (ground, building, tree) and the object classes of the thesis.
+// Kinds of surfaces: background (ground, building, tree, vegetation: bushes, hedges, shrubs) and
+// the object classes: the 16 of the thesis, then the road users PEDESTRIAN and CYCLIST (a person
+// on a bicycle, or a parked bicycle: the real data's "cyclist or bicycle").
 enum Object_class : int {
-  BACKGROUND = 0, GROUND = 1, BUILDING = 2, TREE = 3,
+  BACKGROUND = 0, GROUND = 1, BUILDING = 2, TREE = 3, VEGETATION = 4,
   SHORT_POST = 10, TALL_POST, LAMP_POST, LIGHT_STANDARD, SIGN, TRAFFIC_LIGHT, CAR, FIRE_HYDRANT,
   TRASH_CAN, NEWSPAPER_BOX, PARKING_METER, MAILING_BOX, RECYCLE_BIN, ADVERTISING_CYLINDER,
-  TRAFFIC_CONTROL_BOX, A_FRAME_SIGN
+  TRAFFIC_CONTROL_BOX, A_FRAME_SIGN, PEDESTRIAN, CYCLIST
 };
 constexpr int first_object_class = SHORT_POST;
-constexpr int number_of_object_classes = A_FRAME_SIGN - SHORT_POST + 1;
+constexpr int last_object_class = CYCLIST;
+constexpr int number_of_object_classes = last_object_class - first_object_class + 1;
+// The thesis' classes (SHORT_POST to A_FRAME_SIGN): the street furniture of the default scene.
+constexpr int number_of_thesis_classes = A_FRAME_SIGN - SHORT_POST + 1;
 
-inline bool is_object_class(int c) { return c >= first_object_class && c <= A_FRAME_SIGN; }
+inline bool is_object_class(int c) { return c >= first_object_class && c <= last_object_class; }
 
 inline const char* object_class_name(int c)
 {
   static const char* const objects[] = {
     "short post", "tall post", "lamp post", "light standard", "sign", "traffic light", "car",
     "fire hydrant", "trash can", "newspaper box", "parking meter", "mailing box", "recycle bin",
-    "advertising cylinder", "traffic control box", "A-frame sign"};
-  static const char* const background[] = {"background", "ground", "building", "tree"};
-  if(c >= 0 && c <= TREE)
+    "advertising cylinder", "traffic control box", "A-frame sign", "pedestrian", "cyclist"};
+  static_assert(sizeof(objects) / sizeof(objects[0]) == number_of_object_classes, "one name per class");
+  static const char* const background[] = {"background", "ground", "building", "tree", "vegetation"};
+  if(c >= 0 && c <= VEGETATION)
     return background[c];
   if(is_object_class(c))
     return objects[c - first_object_class];
@@ -67,6 +74,15 @@ struct Urban_scene_options
   double street_length = 200.;      // m, scanner path length along x
   std::size_t objects_per_100m = 30; // objects of the thesis' classes, both sides together
   double tree_probability = 0.7;     // per tree slot (every 10-18 m on each side)
+  // Road users and vegetation (Urban_road_users.h), none by default. Pedestrians walk or stand on
+  // the sidewalks (a quarter in pairs) or cross the road (one in five); cyclists ride along the
+  // outer edge of the lanes (seven in ten) or are parked bicycles on the sidewalks, alone against
+  // a wall or in racks; cars drive in both lanes. Nothing is put within 3.5 m (along the street)
+  // of the rotating sensor's positions in its lane, nor across the profile scanners' path.
+  double pedestrians_per_100m = 0.;
+  double cyclists_per_100m = 0.;
+  double lane_cars_per_100m = 0.;  // cars in the driving lanes (parked cars are objects_per_100m's)
+  double vegetation_per_100m = 0.; // hedges, bushes and low shrubs; > 0 also makes trees irregular
   // Mobile scanner.
   std::size_t target_points = 1000000; // mobile points wanted (roughly); 0: use the two below
   double profile_spacing = 0.05;       // m of travel between scan lines (if target_points == 0)
@@ -466,9 +482,16 @@ struct Builder
   }
 };
 
+// In Urban_road_users.h (included at the end of this file).
+inline Shape make_irregular_tree_shape(Rng& rng);
+inline void add_vegetation(Builder& bd, const Urban_scene_options& o);
+inline void add_road_users(Builder& bd, const Urban_scene_options& o, int& next_id);
+inline void check_road_user_options(const Urban_scene_options& o);
+
 } // namespace urban_detail
 
-// Builds the street scene described by `o` (the scanner parameters are not used here).
+// Builds the street scene described by `o` (the scanner parameters are not used here, but for
+// keeping road users off the scanner's path).
 inline Urban_scene make_urban_scene(const Urban_scene_options& o)
 {
   using namespace urban_detail;
@@ -476,6 +499,7 @@ inline Urban_scene make_urban_scene(const Urban_scene_options& o)
     throw CGAL::Shape_analysis::Bad_input("Urban scene: street_length must be in (1, 1e5] m");
   if(o.objects_per_100m > 200)
     throw CGAL::Shape_analysis::Bad_input("Urban scene: objects_per_100m must be at most 200");
+  check_road_user_options(o);
   Urban_scene sc;
   sc.street_length = o.street_length;
   Builder bd{sc, {}};
@@ -527,12 +551,12 @@ inline Urban_scene make_urban_scene(const Urban_scene_options& o)
 
   // Objects: classes drawn from bags (each bag holds every class, common ones several times),
   // placed at random along the street with some clutter groups.
-  static const int bag_counts[number_of_object_classes] = {3, 2, 3, 1, 3, 1, 5, 1, 2, 2, 2, 1, 1, 1, 1, 1};
+  static const int bag_counts[number_of_thesis_classes] = {3, 2, 3, 1, 3, 1, 5, 1, 2, 2, 2, 1, 1, 1, 1, 1};
   std::vector<int> bag;
   Rng orng(o.seed, (std::uint64_t(1) << 40) + 2);
   auto next_class = [&]() {
     if(bag.empty()) {
-      for(int c = 0; c < number_of_object_classes; ++c)
+      for(int c = 0; c < number_of_thesis_classes; ++c)
         for(int k = 0; k < bag_counts[c]; ++k)
           bag.push_back(first_object_class + c);
       for(std::size_t i = bag.size(); i > 1; --i)
@@ -627,12 +651,14 @@ inline Urban_scene make_urban_scene(const Urban_scene_options& o)
   Rng trng(o.seed, (std::uint64_t(1) << 40) + 3);
   for(int s = -1; s <= 1; s += 2)
     for(double x = trng.uniform(2., 12.); x < L; x += trng.uniform(10., 18.)) {
-      Shape t = make_tree_shape(trng);
+      Shape t = o.vegetation_per_100m > 0 ? make_irregular_tree_shape(trng) : make_tree_shape(trng);
       if(trng.uniform() >= o.tree_probability)
         continue;
       double y = s * (R + 1.5 + trng.uniform(-0.2, 0.2));
       bd.place(t, x, y, sc.ground_height(x, y), 0., 0, TREE);
     }
+  add_vegetation(bd, o);
+  add_road_users(bd, o, next_id);
   return sc;
 }
 
@@ -646,5 +672,7 @@ inline void write_ground_truth(std::ostream& os, const std::vector<Urban_object>
 
 } // namespace Shape_analysis_support
 } // namespace CGAL
+
+#include <Shape_analysis_support/Urban_road_users.h>
 
 #endif // SHAPE_ANALYSIS_SUPPORT_URBAN_SCENE_H
