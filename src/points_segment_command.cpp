@@ -3,16 +3,16 @@
 
 // shape_analysis points segment IN --locations locations.csv --method mincut-auto|mincut|cc|all
 //                                  [--radius r] --output objects.ply --report R.json
-// shape_analysis points recognize IN --output objects.ply [--locations locations.csv]
-//                                    [--tile-size 100] [--tile-margin 10] --report R.json
 // shape_analysis points evaluate --truth truth.json [--locations locations.csv] [--objects objects.ply]
 //                                 --report R.json
+// shape_analysis points evaluate --labels labels.csv --locations locations.csv --report R.json
 //
 // Segmentation of objects from their locations in a raw scan (the ground is estimated and left
-// out internally), and the evaluation of locations and segmentations against a generated
-// scene's truth (the thesis' tables 4.1 and 4.2).
+// out internally), the evaluation of locations and segmentations against a generated scene's
+// truth (the thesis' tables 4.1 and 4.2), and of recognized locations against labelled objects
+// (table 4.5; points_recognize_command.cpp has the recognition itself).
 
-#include "cli_common.h"
+#include "points_common.h"
 
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO/PLY.h>
@@ -24,6 +24,7 @@
 #include <CGAL/Point_set_object_recognition/remove_background.h>
 #include <CGAL/Point_set_object_recognition/segment_objects.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -35,72 +36,94 @@
 
 namespace shape_analysis_cli {
 
-namespace {
-
-namespace PSOR = CGAL::Point_set_object_recognition;
-namespace SAS = CGAL::Shape_analysis_support;
-
-// A location of locations.csv; z is NaN when the file leaves it empty.
-typedef std::array<double, 3> Location;
-
 std::string trim(const std::string& s)
 {
   const std::size_t a = s.find_first_not_of(" \t\r\n"), b = s.find_last_not_of(" \t\r\n");
   return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
 }
 
-// locations.csv: a header line `x,y,z`, then one location per line (z may be empty).
-std::vector<Location> read_locations(const std::string& path)
+std::vector<std::string> csv_cells(const std::string& t)
 {
-  std::ifstream in(path);
-  if(!in)
-    throw Cli_error("cannot open " + path);
+  std::vector<std::string> cells;
+  std::stringstream ss(t);
+  std::string cell;
+  while(std::getline(ss, cell, ','))
+    cells.push_back(trim(cell));
+  if(!t.empty() && t.back() == ',')
+    cells.push_back("");
+  return cells;
+}
+
+bool next_csv_row(std::istream& in, std::size_t& number, std::vector<std::string>& cells)
+{
   std::string line;
-  std::size_t number = 0;
-  std::vector<Location> r;
-  bool header = false;
   while(std::getline(in, line)) {
     ++number;
     if(number == 1 && line.size() >= 3 && (unsigned char)line[0] == 0xEF)
       line = line.substr(3); // UTF-8 byte order mark
     const std::string t = trim(line);
-    if(t.empty())
-      continue;
-    std::vector<std::string> cells;
-    std::stringstream ss(t);
-    std::string cell;
-    while(std::getline(ss, cell, ','))
-      cells.push_back(trim(cell));
-    if(t.back() == ',')
-      cells.push_back("");
-    if(!header) {
-      if(cells.size() != 3 || cells[0] != "x" || cells[1] != "y" || cells[2] != "z")
-        throw Cli_error(path + ": line " + std::to_string(number) + ": the header must be 'x,y,z'");
-      header = true;
-      continue;
+    if(!t.empty()) {
+      cells = csv_cells(t);
+      return true;
     }
-    if(cells.size() != 3)
-      throw Cli_error(path + ": line " + std::to_string(number) + ": expected x,y,z (z may be empty)");
-    Location l;
-    for(std::size_t c = 0; c < 3; ++c) {
-      if(c == 2 && cells[c].empty()) {
-        l[c] = std::numeric_limits<double>::quiet_NaN();
-        continue;
-      }
-      std::size_t used = 0;
-      try {
-        l[c] = std::stod(cells[c], &used);
-      } catch(const std::exception&) {
-        used = 0;
-      }
-      if(used != cells[c].size() || !std::isfinite(l[c]))
-        throw Cli_error(path + ": line " + std::to_string(number) + ": '" + cells[c] + "' is not a finite number");
-    }
-    r.push_back(l);
   }
-  if(!header)
+  return false;
+}
+
+double finite_number(const std::string& cell, const std::string& where)
+{
+  double v = 0;
+  std::size_t used = 0;
+  try {
+    v = std::stod(cell, &used);
+  } catch(const std::exception&) {
+    used = 0;
+  }
+  if(cell.empty() || used != cell.size() || !std::isfinite(v))
+    throw Cli_error(where + "'" + cell + "' is not a finite number");
+  return v;
+}
+
+Locations_file read_locations_file(const std::string& path)
+{
+  std::ifstream in(path);
+  if(!in)
+    throw Cli_error("cannot open " + path);
+  std::size_t number = 0, columns = 0;
+  Locations_file r;
+  const auto where = [&]() { return path + ": line " + std::to_string(number) + ": "; };
+  const auto number_of = [&](const std::string& cell) { return finite_number(cell, where()); };
+  std::vector<std::string> cells;
+  while(next_csv_row(in, number, cells)) {
+    if(columns == 0) {
+      const std::vector<std::string> plain{"x", "y", "z"}, labelled{"x", "y", "z", "label", "confidence"};
+      if(cells != plain && cells != labelled)
+        throw Cli_error(where() + "the header must be 'x,y,z' or 'x,y,z,label,confidence'");
+      columns = cells.size();
+      r.labelled = columns == 5;
+      continue;
+    }
+    if(cells.size() != columns)
+      throw Cli_error(where() + (columns == 3 ? "expected x,y,z (z may be empty)" : "expected x,y,z,label,confidence"));
+    Location l;
+    l[0] = number_of(cells[0]), l[1] = number_of(cells[1]);
+    l[2] = cells[2].empty() ? std::numeric_limits<double>::quiet_NaN() : number_of(cells[2]);
+    r.locations.push_back(l);
+    if(r.labelled) {
+      if(cells[3].empty())
+        throw Cli_error(where() + "the label is empty");
+      r.labels.push_back(cells[3]);
+      r.confidences.push_back(cells[4].empty() ? std::numeric_limits<double>::quiet_NaN() : number_of(cells[4]));
+    }
+  }
+  if(columns == 0)
     throw Cli_error(path + ": empty (expected a header line 'x,y,z')");
   return r;
+}
+
+std::vector<Location> read_locations(const std::string& path)
+{
+  return read_locations_file(path).locations;
 }
 
 // The segmentation method of a command-line name: all, cc, mincut, mincut-auto.
@@ -169,12 +192,41 @@ PSOR::Point_set_read_result read_scan_to_segment(const std::string& input, CGAL:
   return read;
 }
 
+// Renames the integer property `from` of `ps`, if any, to `to` (as int); throws Cli_error when
+// `from` is a property of another type or `to` exists.
+void move_property_to(CGAL::Point_set_3<Point_3>& ps, const std::string& from, const std::string& to)
+{
+  const std::vector<std::string> names = ps.properties();
+  if(std::find(names.begin(), names.end(), from) == names.end())
+    return;
+  std::vector<int> values;
+  const auto take = [&](auto tag) {
+    typedef decltype(tag) T;
+    if(values.empty() && ps.template has_property_map<T>(from)) {
+      auto map = ps.template property_map<T>(from).first;
+      for(auto i : ps)
+        values.push_back(int(map[i]));
+      ps.remove_property_map(map);
+    }
+  };
+  take(int()), take((unsigned char)0), take((unsigned int)0), take(short()), take((unsigned short)0), take((signed char)0);
+  if(values.size() != ps.size())
+    throw Cli_error("the input's '" + from + "' property is not an integer property");
+  auto added = ps.template add_property_map<int>(to, -1);
+  if(!added.second)
+    throw Cli_error("the input has both '" + from + "' and '" + to + "' properties");
+  std::size_t k = 0;
+  for(auto i : ps)
+    added.first[i] = values[k++];
+}
+
 // Stages objects.ply: the input's points in input order with their properties, 'object' (per point
 // its location's row, -1 for none), 'ground' (1 for ground) and, unless the input has colours,
 // colours by object (grey for none).
 void stage_objects_ply(Output_files& outputs, const std::string& path, const std::string& input,
                        const CGAL::Point_set_3<Point_3>& points, const std::vector<int>& object,
-                       const std::vector<char>& ground, const std::string& command)
+                       const std::vector<char>& ground, const std::string& command, const std::vector<int>& label,
+                       const std::string& comment)
 {
   outputs.stage(path, true, [&](std::ostream& out) {
     CGAL::Point_set_3<Point_3> result = points;
@@ -182,6 +234,14 @@ void stage_objects_ply(Output_files& outputs, const std::string& path, const std
     auto ground_map = result.add_property_map<unsigned char>("ground", 0);
     if(!object_map.second || !ground_map.second)
       throw Cli_error(input + " already has an 'object' or a 'ground' property");
+    CGAL::Point_set_3<Point_3>::Property_map<int> label_map;
+    if(!label.empty()) {
+      move_property_to(result, "label", "input_label"); // e.g. the true classes of a generated scan
+      auto added = result.add_property_map<int>("label", -1);
+      if(!added.second)
+        throw Cli_error(input + " already has a 'label' property");
+      label_map = added.first;
+    }
     const bool coloured = !result.has_property_map<unsigned char>("red") && !result.has_property_map<unsigned char>("green") &&
                           !result.has_property_map<unsigned char>("blue");
     CGAL::Point_set_3<Point_3>::Property_map<unsigned char> red, green, blue;
@@ -194,17 +254,23 @@ void stage_objects_ply(Output_files& outputs, const std::string& path, const std
     for(auto i : result) {
       object_map.first[i] = object[k];
       ground_map.first[i] = ground[k] ? 1 : 0;
+      if(!label.empty())
+        label_map[i] = label[k];
       if(coloured) {
-        const auto c = object[k] < 0 ? std::array<unsigned char, 3>{{160, 160, 160}} : label_colour(std::size_t(object[k]) + 1);
+        const int by = label.empty() ? object[k] : label[k]; // colours by class when there are classes
+        const auto c = by < 0 ? std::array<unsigned char, 3>{{160, 160, 160}} : label_colour(std::size_t(by) + 1);
         red[i] = c[0], green[i] = c[1], blue[i] = c[2];
       }
       ++k;
     }
     CGAL::IO::set_mode(out, CGAL::IO::BINARY);
-    if(!CGAL::IO::write_PLY(out, result, "written by shape_analysis " + command + " (CGAL Global Shape Analysis)"))
+    if(!CGAL::IO::write_PLY(out, result, "written by shape_analysis " + command + " (CGAL Global Shape Analysis)" +
+                                            (comment.empty() ? std::string() : "\n" + comment)))
       throw Cli_error("cannot write " + path);
   });
 }
+
+namespace {
 
 // The files and switches of the command; the segmentation's options with the library's defaults
 // (the method by its command-line name).
@@ -305,124 +371,11 @@ int run_segment(const Segment_options& o)
   return 0;
 }
 
-// The files and switches of the command; the recognition's options with the library's defaults
-// (the methods by their command-line names, the tile origin as given).
-struct Recognize_options
-{
-  std::string input, output, locations, report;
-  PSOR::Recognize_objects_options recognition;
-  std::string method = localization_method_name(recognition.localization_method);
-  std::string segmentation = segmentation_method_name(recognition.segmentation_method);
-  std::vector<double> origin; // empty: none
-  bool quiet = false, verbose = false;
-};
-
-int run_recognize(const Recognize_options& o)
-{
-  Stopwatch total;
-  Progress progress("points recognize", o.quiet, o.verbose);
-  Output_files outputs;
-  outputs.add_input(o.input);
-  require_extension(o.output, ".ply", "segmented points");
-  outputs.add_output(o.output, "segmented points");
-  if(!o.locations.empty()) {
-    require_extension(o.locations, ".csv", "locations");
-    outputs.add_output(o.locations, "locations");
-  }
-  outputs.add_optional_output(o.report, "report");
-  PSOR::Recognize_objects_options ro = o.recognition;
-  ro.localization_method = localization_method(o.method);
-  ro.segmentation_method = segmentation_method(o.segmentation);
-  if(!(ro.tile_size > 0) || !std::isfinite(ro.tile_size))
-    throw Usage_error("--tile-size must be a positive number");
-  if(!(ro.tile_margin >= 0) || !std::isfinite(ro.tile_margin))
-    throw Usage_error("--tile-margin must be zero or a positive number");
-  if(!(ro.background_radius > 0) || !std::isfinite(ro.background_radius))
-    throw Usage_error("--radius must be a positive number");
-
-  progress.stage("reading " + o.input);
-  CGAL::Point_set_3<Point_3> points;
-  double read_seconds = 0;
-  const PSOR::Point_set_read_result read = read_scan_to_segment(o.input, points, read_seconds);
-
-  std::ostringstream stage;
-  stage << "recognizing objects among " << points.size() << " points, tiles of " << ro.tile_size << " m";
-  progress.stage(stage.str());
-  Stopwatch work;
-  const auto parameters = PSOR::parameters::tile_size(ro.tile_size)
-                            .tile_margin(ro.tile_margin)
-                            .localization_method(ro.localization_method)
-                            .segmentation_method(ro.segmentation_method)
-                            .background_radius(ro.background_radius)
-                            .number_of_threads(ro.number_of_threads);
-  const PSOR::Object_recognition_result r =
-    o.origin.empty() ? PSOR::recognize_objects(points, parameters)
-                     : PSOR::recognize_objects(points, parameters.tile_origin(std::array<double, 2>{{o.origin[0], o.origin[1]}}));
-  const double seconds = work.seconds();
-
-  progress.stage("writing " + o.output);
-  std::vector<int> object(points.size(), -1);
-  std::vector<char> ground(points.size(), 0);
-  for(std::size_t k = 0; k < object.size(); ++k) {
-    if(r.object_of_point[k] != PSOR::Object_recognition_result::no_object)
-      object[k] = int(r.object_of_point[k]);
-    ground[k] = r.kind[k] == PSOR::Point_kind::GROUND;
-  }
-  stage_objects_ply(outputs, o.output, o.input, points, object, ground, "points recognize");
-  if(!o.locations.empty())
-    outputs.stage(o.locations, false, [&](std::ostream& out) {
-      std::vector<std::array<double, 3>> positions;
-      for(const PSOR::Object_location& l : r.locations)
-        positions.push_back(l.position);
-      write_locations_csv(out, positions);
-    });
-  if(!o.report.empty()) {
-    Json report = Json::object();
-    report["command"] = "points recognize";
-    report["input"] = o.input;
-    report["format"] = read.format;
-    report["number_of_points"] = points.size();
-    Json parameters = Json::object();
-    parameters["tile_size"] = ro.tile_size;
-    parameters["tile_margin"] = ro.tile_margin;
-    if(!o.origin.empty())
-      parameters["tile_origin"] = Json(o.origin);
-    parameters["localization_method"] = localization_method_name(ro.localization_method);
-    parameters["segmentation_method"] = segmentation_method_name(ro.segmentation_method);
-    parameters["background_radius"] = ro.background_radius;
-    parameters["number_of_threads"] = ro.number_of_threads;
-    report["parameters"] = parameters;
-    report["points_per_second"] = seconds > 0 ? double(points.size()) / seconds : 0.0;
-    report["largest_tile_points"] = r.largest_tile;
-    Json tiles = Json::array();
-    for(const PSOR::Scene_tile& t : r.tiles) {
-      Json j = Json::object();
-      j["min"] = Json(std::vector<double>{t.min[0], t.min[1]});
-      j["max"] = Json(std::vector<double>{t.max[0], t.max[1]});
-      j["points"] = t.number_of_points;
-      j["locations"] = t.number_of_locations;
-      j["seconds"] = t.seconds;
-      tiles.push_back(j);
-    }
-    report["tiles"] = tiles;
-    std::vector<std::array<double, 3>> at;
-    for(const PSOR::Object_location& l : r.locations)
-      at.push_back(l.position);
-    report["objects"] = objects_report(at, r.objects);
-    stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(),
-                 {{"objects", o.output}, {"locations", o.locations}});
-  }
-  outputs.commit();
-  progress.done();
-  std::cout << o.input << ": " << r.locations.size() << " objects in " << r.tiles.size() << " tiles (at most "
-            << r.largest_tile << " points each) in " << seconds << " s\n";
-  return 0;
-}
-
 struct Evaluate_options
 {
-  std::string truth, locations, objects, report;
+  std::string truth, labels, locations, objects, report;
   double radius = 1;
+  double minimum_points = 0; // labelled objects with fewer points (when their file says) left out
   bool quiet = false;
 };
 
@@ -450,8 +403,36 @@ bool integer_property(const Point_set& ps, const std::string& name, std::vector<
   return true;
 }
 
+// Recognition: the labelled locations against labelled objects (the thesis' table 4.5).
+int run_evaluate_recognition(const Evaluate_options& o)
+{
+  Stopwatch total;
+  Output_files outputs;
+  outputs.add_input(o.labels);
+  outputs.add_input(o.locations);
+  outputs.add_optional_output(o.report, "report");
+  if(o.locations.empty() || !o.objects.empty() || !o.truth.empty())
+    throw Usage_error("--labels goes with --locations (a locations.csv of 'points recognize --model') alone");
+  if(!(o.radius > 0) || !std::isfinite(o.radius))
+    throw Usage_error("--radius must be a positive number");
+  Json report = Json::object();
+  report["command"] = "points evaluate";
+  report["labels"] = o.labels;
+  report["locations"] = o.locations;
+  Stopwatch work;
+  report["recognition"] = evaluate_recognition_files(o.labels, o.locations, o.radius, o.minimum_points);
+  if(!o.report.empty())
+    stage_report(outputs, o.report, report, work.seconds(), 0.0, total.seconds(), {});
+  outputs.commit();
+  return 0;
+}
+
 int run_evaluate(const Evaluate_options& o)
 {
+  if(!o.labels.empty())
+    return run_evaluate_recognition(o);
+  if(o.truth.empty())
+    throw Usage_error("give --truth (a generated scene's objects) or --labels (labelled objects)");
   Stopwatch total;
   Output_files outputs;
   outputs.add_input(o.truth);
@@ -596,45 +577,22 @@ void add_points_segment_commands(CLI::App* points, std::function<int()>& run)
   segment->add_flag("-v,--verbose", s->verbose, "Progress on stderr even when it is not a terminal");
   segment->callback([s, &run]() { run = [s]() { return run_segment(*s); }; });
 
-  auto g = std::make_shared<Recognize_options>();
-  CLI::App* recognize = points->add_subcommand(
-    "recognize", "Find and segment the objects of a scan of any size, tile by tile (ground estimate, background "
-                 "removal, localization, min-cut segmentation), tiles in parallel: the memory of one tile per thread.");
-  recognize->add_option("input", g->input, "The scan (.ply, .xyz, .las, .bin), metres, z up")->required();
-  recognize->add_option("-o,--output", g->output,
-                        "The input's points in input order (.ply) with their properties, 'object' (the 0-based row "
-                        "of the location in --locations, -1 for none) and 'ground' (1: ground)")
-    ->required();
-  recognize->add_option("--locations", g->locations, "The locations found (.csv: a header line x,y,z, then one per line)");
-  PSOR::Recognize_objects_options& ro = g->recognition;
-  recognize->add_option("--tile-size", ro.tile_size, "Side of the square tiles (m)")->capture_default_str();
-  recognize->add_option("--tile-margin", ro.tile_margin, "Band around a tile whose points it is processed with (m)")
-    ->capture_default_str();
-  recognize->add_option("--tile-origin", g->origin,
-                        "A corner of the tiles' grid, x,y (default: the corner of the bounding box); separate runs "
-                        "on bands of a scene with one origin have the same tiles")
-    ->expected(2)
-    ->delimiter(',');
-  recognize->add_option("--method", g->method, "Localization: nc, cc, meanshift or image")
-    ->capture_default_str()
-    ->check(CLI::IsMember({"nc", "cc", "meanshift", "image"}));
-  recognize->add_option("--segmentation", g->segmentation, "mincut-auto (radius 1-7 m chosen per object), mincut, cc or all")
-    ->capture_default_str()
-    ->check(CLI::IsMember({"mincut-auto", "mincut", "cc", "all"}));
-  recognize->add_option("--radius", ro.background_radius, "Background radius of mincut, radius of cc and all (m)")
-    ->capture_default_str();
-  recognize->add_option("--report", g->report, "JSON report (seconds, points per second, tiles; per object: location, points, radius, cut, seconds)");
-  recognize->add_option("--threads", ro.number_of_threads, "Largest number of threads (0: all cores)")
-    ->capture_default_str();
-  recognize->add_flag("-q,--quiet", g->quiet, "No progress on stderr");
-  recognize->add_flag("-v,--verbose", g->verbose, "Progress on stderr even when it is not a terminal");
-  recognize->callback([g, &run]() { run = [g]() { return run_recognize(*g); }; });
+  add_points_recognize_commands(points, run);
 
   auto e = std::make_shared<Evaluate_options>();
   CLI::App* evaluate = points->add_subcommand(
     "evaluate", "Evaluate locations (per class recall, precision) and segmentations (per class precision and "
-                "recall of the points) against the truth of a generated scene.");
-  evaluate->add_option("--truth", e->truth, "The true objects (.json written by 'points generate --truth')")->required();
+                "recall of the points) against the truth of a generated scene, or recognized locations against "
+                "labelled objects (per class recognition precision and recall).");
+  evaluate->add_option("--truth", e->truth, "The true objects (.json written by 'points generate --truth')");
+  evaluate->add_option("--labels", e->labels,
+                       "Labelled objects (.csv 'x,y,label' or a boxes file 'class,x,y,z,length,width,height,yaw', "
+                       "or a --truth .json) to score the labels of --locations against: recognition precision and "
+                       "recall per class (the thesis' table 4.5)");
+  evaluate->add_option("--min-points", e->minimum_points,
+                       "Leave out labelled objects with fewer points, when the labels file says (boxes 'points', "
+                       "truth 'scanned_points')")
+    ->capture_default_str();
   evaluate->add_option("--locations", e->locations, "Locations to evaluate (.csv: x,y,z)");
   evaluate->add_option("--objects", e->objects,
                        "Segmented points to evaluate (.ply written by 'points segment' on a generated scan: its "

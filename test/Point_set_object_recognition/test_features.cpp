@@ -16,10 +16,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -84,7 +86,7 @@ TEST(ObjectFeatures, KnownShapes)
 {
   const Scene scene;
   const PSOR::Object_features f = PSOR::extract_object_features(scene.points, scene.locations);
-  ASSERT_EQ(f.names.size(), 3u * 6u + 50u);
+  ASSERT_EQ(f.names.size(), 3u * 6u + 50u + 5u);
   ASSERT_EQ(f.values.size(), 3u);
   for(const auto& row : f.values)
     ASSERT_EQ(row.size(), f.names.size());
@@ -120,6 +122,23 @@ TEST(ObjectFeatures, KnownShapes)
         EXPECT_NEAR(v, j < 7 ? 0.4 / 3 : 0.2 / 3, 0.01) << j;
     }
   EXPECT_NEAR(total, 1.0, 1e-12);
+  // Column features. The pole: 3 m high in one cell of 0.2 m, the 90th percentile of heights
+  // uniform on [0, 3] at 2.7 m.
+  for(const char* top : {"column.top_0.5m", "column.top_1m", "column.top_2m"})
+    EXPECT_NEAR(feature(f, 0, top), 3.0, 0.01) << top;
+  EXPECT_NEAR(feature(f, 0, "column.area_1m"), 0.04, 1e-12);
+  EXPECT_NEAR(feature(f, 0, "column.height_90_1m"), 2.7, 0.01);
+  // The bar at 1 m: 2 m of it within 1 m of its middle, across about ten cells.
+  EXPECT_NEAR(feature(f, 1, "column.top_1m"), 1.0, 1e-9);
+  EXPECT_NEAR(feature(f, 1, "column.height_90_1m"), 1.0, 1e-9);
+  EXPECT_GT(feature(f, 1, "column.area_1m"), 0.3);
+  EXPECT_LT(feature(f, 1, "column.area_1m"), 0.8);
+  // The box: its top (1.513 m) over the disc of 1 m clipped to its width of 1.6 m (2.87 m2; the
+  // cells of 0.2 m on the rim of that, about 5 m long, count whole).
+  EXPECT_NEAR(feature(f, 2, "column.top_0.5m"), 1.513, 1e-9);
+  EXPECT_NEAR(feature(f, 2, "column.height_90_1m"), 1.513, 1e-9);
+  EXPECT_GT(feature(f, 2, "column.area_1m"), 2.87);
+  EXPECT_LT(feature(f, 2, "column.area_1m"), 2.87 + 5 * 0.2);
 }
 
 TEST(ObjectFeatures, SameWhenTheSceneTurnsAndMoves)
@@ -140,7 +159,9 @@ TEST(ObjectFeatures, SameWhenTheSceneTurnsAndMoves)
   ASSERT_EQ(f.names, g.names);
   for(std::size_t o = 0; o < 3; ++o)
     for(std::size_t k = 0; k < f.names.size(); ++k) {
-      const double tolerance = f.names[k].find("volume") != std::string::npos ? 0.1 * f.values[o][k] + 0.05 : 1e-6;
+      // (the volume's columns and the area's cells are on grids, which turn with the scene)
+      const bool grid = f.names[k].find("volume") != std::string::npos || f.names[k].find("area") != std::string::npos;
+      const double tolerance = grid ? 0.1 * f.values[o][k] + 0.05 : 1e-6;
       EXPECT_NEAR(f.values[o][k], g.values[o][k], tolerance) << f.names[k] << " of object " << o;
     }
 }
@@ -241,6 +262,72 @@ TEST(ObjectRecognition, TrainOnOneSceneClassifyAnother)
       << "a label not below the number of classes";
 }
 
+// The examples of a labelled scan: an object at each candidate near it (with its label), at its
+// own place when no candidate is near, the far candidates as background; two scans pooled train
+// the same classifier as their examples concatenated.
+TEST(ObjectRecognition, TrainingExamples)
+{
+  std::vector<Point> points;
+  std::vector<PSOR::Labelled_location> objects;
+  add_poles_and_boxes(5, 0, 4, points, objects);
+  points.emplace_back(-60, 0, 0.5);
+  std::vector<std::array<double, 3>> candidates;
+  candidates.push_back({{objects[0].position[0] + 0.5, 0, 0}}); // near object 0 (two candidates)
+  candidates.push_back({{objects[0].position[0] - 0.5, 0, 0}});
+  candidates.push_back({{-50, 0, 0}}); // background
+  // objects 1..3 have no candidate: learned at their own places
+  const PSOR::Object_training_examples e = PSOR::object_training_examples(points, objects, 2, candidates);
+  ASSERT_EQ(e.labels.size(), 2u + 3u + 1u);
+  ASSERT_EQ(e.features.values.size(), e.labels.size());
+  EXPECT_EQ(e.labels[0], objects[0].label);
+  EXPECT_EQ(e.labels[1], objects[0].label);
+  for(std::size_t k = 1; k < 4; ++k)
+    EXPECT_EQ(e.labels[k + 1], objects[k].label);
+  EXPECT_EQ(e.labels.back(), 2u) << "the far candidate is background";
+  // With a larger background distance, the far candidate is still background, and nothing else
+  // changes; with a tiny one, the two near candidates become background and object 0 is learned
+  // at its own place.
+  const PSOR::Object_training_examples tight = PSOR::object_training_examples(points, objects, 2, candidates, 0.1);
+  ASSERT_EQ(tight.labels.size(), 4u + 3u);
+  EXPECT_EQ(std::count(tight.labels.begin(), tight.labels.end(), std::size_t(2)), 3);
+  // Training on the examples equals train_object_classifier().
+  PSOR::Knn_object_classifier a(1), b(1);
+  a.train(e.features.values, e.labels, 3);
+  PSOR::train_object_classifier(b, points, objects, 2, candidates);
+  for(const auto& row : e.features.values) {
+    double ca = 0, cb = 0;
+    EXPECT_EQ(a.predict(row, ca), b.predict(row, cb));
+    EXPECT_EQ(ca, cb);
+  }
+  EXPECT_THROW(PSOR::object_training_examples(points, objects, 2, candidates, 0.0), CGAL::Shape_analysis::Bad_input);
+  std::vector<std::array<double, 3>> bad = candidates;
+  bad[0][1] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(PSOR::object_training_examples(points, objects, 2, bad), CGAL::Shape_analysis::Bad_input);
+}
+
+// Identical vectors of two classes leave the forest's nodes without a split (every coordinate
+// constant): the model still saves, loads and predicts the same (a real street's examples did).
+TEST(ObjectRecognition, ForestWithUnsplittableNodesSavesAndLoads)
+{
+  std::vector<std::vector<double>> features;
+  std::vector<std::size_t> labels;
+  for(int k = 0; k < 40; ++k) {
+    features.push_back(k < 30 ? std::vector<double>{1.0, 2.0, 3.0} : std::vector<double>{double(k), 0.5 * k, 1.0});
+    labels.push_back(k < 30 ? std::size_t(k % 2) : std::size_t(2));
+  }
+  PSOR::Random_forest_object_classifier forest(10, 20, 1);
+  forest.train(features, labels, 3);
+  std::stringstream text;
+  forest.save(text);
+  PSOR::Random_forest_object_classifier loaded;
+  ASSERT_NO_THROW(loaded.load(text));
+  for(const auto& f : features) {
+    double a = 0, b = 0;
+    EXPECT_EQ(forest.predict(f, a), loaded.predict(f, b));
+    EXPECT_EQ(a, b);
+  }
+}
+
 TEST(ObjectRecognition, EvaluationCounts)
 {
   const auto at = [](double x, std::size_t label) {
@@ -308,8 +395,11 @@ TEST(ObjectRecognition, RecognizeObjectsWithAClassifier)
     if(r.kind[i] != PSOR::Point_kind::GROUND)
       kept.push_back(scan[i]);
   const std::vector<PSOR::Labelled_location> c = PSOR::classify_objects(forest, kept, r.locations);
+  ASSERT_EQ(r.features.size(), r.locations.size()) << "the rows the labels came from";
+  const PSOR::Object_features direct = PSOR::extract_object_features(kept, r.locations);
   std::size_t objects = 0;
   for(std::size_t k = 0; k < c.size(); ++k) {
+    EXPECT_EQ(r.features[k], direct.values[k]) << "location " << k;
     EXPECT_EQ(r.labels[k], c[k].label) << "location " << k;
     EXPECT_DOUBLE_EQ(r.confidences[k], c[k].confidence);
     objects += r.labels[k] < std::size_t(SAS::number_of_object_classes) ? 1 : 0;
@@ -322,6 +412,7 @@ TEST(ObjectRecognition, RecognizeObjectsWithAClassifier)
       PSOR::recognize_objects(scan, PSOR::parameters::object_classifier(forest).tile_size(30.0));
   EXPECT_EQ(tiles.labels.size(), tiles.locations.size());
   EXPECT_TRUE(PSOR::recognize_objects(scan, PSOR::parameters::tile_size(1000.0)).labels.empty());
+  EXPECT_TRUE(PSOR::recognize_objects(scan, PSOR::parameters::tile_size(1000.0)).features.empty());
   EXPECT_THROW(PSOR::recognize_objects(scan, PSOR::parameters::object_classifier(PSOR::Knn_object_classifier(1))),
                CGAL::Shape_analysis::Bad_input);
 }

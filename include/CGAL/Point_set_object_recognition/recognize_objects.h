@@ -62,6 +62,9 @@ struct Object_recognition_result
   /// `train_object_classifier()`, the number of classes means background); empty otherwise.
   std::vector<std::size_t> labels;
   std::vector<double> confidences; ///< per location, the classifier's confidence in its label
+  /// With an `object_classifier`: per location, the features it was classified from (a row of
+  /// `extract_object_features()`, e.g. to add context features and classify again); else empty.
+  std::vector<std::vector<double>> features;
   std::vector<Scene_tile> tiles;   ///< the tiles that hold points, in the order processed
   std::size_t largest_tile = 0;    ///< the most points a tile was processed with
   double seconds = 0;              ///< the whole call
@@ -182,6 +185,7 @@ struct Tile_output
   std::vector<Object_segmentation> objects;
   std::vector<std::size_t> labels;
   std::vector<double> confidences;
+  std::vector<std::vector<double>> features;
 };
 
 // The tiles of the scene of the n points `point(i)`; Bad_input for a coordinate that is not finite
@@ -319,12 +323,13 @@ void process_tile(std::size_t t, long reach, const Tile_grid& grid, const std::v
       kept[k] = q[above[k]];
     Segmentation_result s = internal::segment_objects(kept, own, o.segmentation);
     if(o.classify) { // the features of the tile's objects among its own points, this segmentation reused
-      const Object_features f = object_features(kept, own, o.segmentation, Extract_object_features_options().spin_image_radius,
-                                                &s.objects);
+      Object_features f = object_features(kept, own, o.segmentation, Extract_object_features_options().spin_image_radius,
+                                          &s.objects);
       out.labels.resize(own.size());
       out.confidences.resize(own.size());
       for(std::size_t k = 0; k < own.size(); ++k)
         out.labels[k] = o.classify(f.values[k], out.confidences[k]);
+      out.features = std::move(f.values);
     }
     for(Object_segmentation& object : s.objects) {
       for(std::size_t& i : object.points)
@@ -360,6 +365,8 @@ void merge_tiles(std::vector<Tile_output>& outputs, const PointAt& point, Object
     }
     r.labels.insert(r.labels.end(), out.labels.begin(), out.labels.end());
     r.confidences.insert(r.confidences.end(), out.confidences.begin(), out.confidences.end());
+    r.features.insert(r.features.end(), std::make_move_iterator(out.features.begin()),
+                      std::make_move_iterator(out.features.end()));
     r.tiles.push_back(out.tile);
     out = Tile_output();
   }

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -41,17 +42,100 @@ inline void check_finite_location(const std::array<double, 3>& p, const std::str
 
 } // namespace internal
 
+/// \ingroup PkgPointSetObjectRecognitionRef
+/// The examples a classifier learns from (`object_training_examples()`): one row of features per
+/// example and its class.
+struct Object_training_examples
+{
+  Object_features features;        ///< the names of the features and one row per example
+  std::vector<std::size_t> labels; ///< per row, its class (`number_of_classes`: background)
+  std::vector<std::array<double, 3>> locations; ///< per row, where the features were computed
+};
+
 /*!
 \ingroup PkgPointSetObjectRecognitionRef
-Trains `classifier` on the objects of a labelled scan (thesis section 4.4.2), from the features
-(`extract_object_features()`) at the candidate locations (typically those of `locate_objects()`
-on the same scan), where objects will be seen when classifying: a labelled object is learned at
-each candidate within `background_distance` of it (horizontally), with its label, or at its own
-location when no candidate lies that near; a candidate with no labelled object within
-`background_distance` is an example of the class `background` (index `number_of_classes`). The
-classifier thus learns `number_of_classes + 1` classes. (Learning the objects at their true
-locations only, the random forest recognized 0.66 / 0.63 of a generated street's objects, against
-0.80 / 0.76 this way: `bench_object_recognition`.)
+The examples that `train_object_classifier()` learns from on one labelled scan (thesis section
+4.4.2): the features (`extract_object_features()`) at the candidate locations (typically those of
+`locate_objects()` on the same scan), where objects will be seen when classifying. A labelled
+object is an example at each candidate within `background_distance` of it (horizontally), with
+its label, or at its own location when no candidate lies that near; a candidate with no labelled
+object within `background_distance` is an example of the class `background` (index
+`number_of_classes`). Examples of several scans, concatenated, train one classifier on all of
+them (as `shape_analysis points train` does).
+
+\tparam PointRange a model of `ConstRange` whose iterator type is `RandomAccessIterator`
+\tparam CandidateRange a range of `Object_location` or of `std::array<double, 3>`
+\tparam NamedParameters a sequence of named parameters
+
+\param points the points of the scan, without the ground (as for `segment_objects()`)
+\param objects the labelled objects, labels below `number_of_classes`
+\param number_of_classes the number of object classes (without the background)
+\param candidates candidate locations, the unlabelled ones giving background examples
+\param background_distance a candidate within this horizontal distance (metres) of a labelled
+       object is an example of its class, not of the background (the thesis' match: 1 m)
+\param np the named parameters of `extract_object_features()`
+
+\returns the examples: the objects' first (in their order), then the background's
+
+\throws CGAL::Shape_analysis::Bad_input if there is no labelled object, a label is not below
+        `number_of_classes`, a location is not finite, `background_distance` is not positive, or
+        as `extract_object_features()`
+*/
+template <typename PointRange, typename CandidateRange, typename NamedParameters = parameters::Default_named_parameters>
+Object_training_examples object_training_examples(const PointRange& points, const std::vector<Labelled_location>& objects,
+                                                  std::size_t number_of_classes, const CandidateRange& candidates,
+                                                  double background_distance = 1.0,
+                                                  const NamedParameters& np = parameters::default_values())
+{
+  const std::string who = "object_training_examples";
+  if(objects.empty())
+    throw Bad_input(who + ": no labelled object");
+  if(!(background_distance > 0) || !std::isfinite(background_distance))
+    throw Bad_input(who + ": background_distance must be a positive number");
+  for(const Labelled_location& o : objects) {
+    internal::check_finite_location(o.position, who);
+    if(o.label >= number_of_classes)
+      throw Bad_input(who + ": a label is not below number_of_classes");
+  }
+  const std::vector<std::array<double, 3>> candidate = internal::location_positions(candidates);
+  for(const auto& c : candidate)
+    internal::check_finite_location(c, who);
+  const auto near = [&](const std::array<double, 3>& c, const Labelled_location& o) {
+    return std::hypot(c[0] - o.position[0], c[1] - o.position[1]) <= background_distance;
+  };
+  std::vector<std::array<double, 3>> at;
+  Object_training_examples r;
+  for(const Labelled_location& o : objects) { // where the classification will see it
+    bool seen = false;
+    for(const auto& c : candidate)
+      if(near(c, o)) {
+        at.push_back(c), r.labels.push_back(o.label);
+        seen = true;
+      }
+    if(!seen)
+      at.push_back(o.position), r.labels.push_back(o.label);
+  }
+  for(const auto& c : candidate) { // background: away from every labelled object
+    bool away = true;
+    for(const Labelled_location& o : objects)
+      away = away && !near(c, o);
+    if(away)
+      at.push_back(c), r.labels.push_back(number_of_classes);
+  }
+  r.features = extract_object_features(points, at, np);
+  r.locations = std::move(at);
+  return r;
+}
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+Trains `classifier` on the objects of a labelled scan (thesis section 4.4.2): on the examples of
+`object_training_examples()`, that is on the features at the candidate locations, where objects
+will be seen when classifying, a candidate away from every labelled object being an example of
+the class `background` (index `number_of_classes`). The classifier thus learns
+`number_of_classes + 1` classes. (Learning the objects at their true locations only, the random
+forest recognized 0.66 / 0.63 of a generated street's objects, against 0.80 / 0.76 this way:
+`bench_object_recognition`.)
 
 \tparam Classifier a model of the `ObjectClassifier` concept (\ref ObjectClassifierConcept)
 \tparam PointRange a model of `ConstRange` whose iterator type is `RandomAccessIterator`
@@ -69,9 +153,8 @@ locations only, the random forest recognized 0.66 / 0.63 of a generated street's
 
 \returns the features the classifier learned from, one row per example
 
-\throws CGAL::Shape_analysis::Bad_input if there is no labelled object, a label is not below
-        `number_of_classes`, a location is not finite, `background_distance` is not positive, or
-        as `extract_object_features()` and the classifier's `train()`
+\throws CGAL::Shape_analysis::Bad_input as `object_training_examples()` and the classifier's
+        `train()`
 */
 template <typename Classifier, typename PointRange, typename CandidateRange,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -80,44 +163,10 @@ Object_features train_object_classifier(Classifier& classifier, const PointRange
                                         const CandidateRange& candidates, double background_distance = 1.0,
                                         const NamedParameters& np = parameters::default_values())
 {
-  const std::string who = "train_object_classifier";
-  if(objects.empty())
-    throw Bad_input(who + ": no labelled object");
-  if(!(background_distance > 0) || !std::isfinite(background_distance))
-    throw Bad_input(who + ": background_distance must be a positive number");
-  for(const Labelled_location& o : objects) {
-    internal::check_finite_location(o.position, who);
-    if(o.label >= number_of_classes)
-      throw Bad_input(who + ": a label is not below number_of_classes");
-  }
-  const std::vector<std::array<double, 3>> candidate = internal::location_positions(candidates);
-  for(const auto& c : candidate)
-    internal::check_finite_location(c, who);
-  const auto near = [&](const std::array<double, 3>& c, const Labelled_location& o) {
-    return std::hypot(c[0] - o.position[0], c[1] - o.position[1]) <= background_distance;
-  };
-  std::vector<std::array<double, 3>> at;
-  std::vector<std::size_t> labels;
-  for(const Labelled_location& o : objects) { // where the classification will see it
-    bool seen = false;
-    for(const auto& c : candidate)
-      if(near(c, o)) {
-        at.push_back(c), labels.push_back(o.label);
-        seen = true;
-      }
-    if(!seen)
-      at.push_back(o.position), labels.push_back(o.label);
-  }
-  for(const auto& c : candidate) { // background: away from every labelled object
-    bool away = true;
-    for(const Labelled_location& o : objects)
-      away = away && !near(c, o);
-    if(away)
-      at.push_back(c), labels.push_back(number_of_classes);
-  }
-  Object_features f = extract_object_features(points, at, np);
-  classifier.train(f.values, labels, number_of_classes + 1);
-  return f;
+  Object_training_examples e =
+    object_training_examples(points, objects, number_of_classes, candidates, background_distance, np);
+  classifier.train(e.features.values, e.labels, number_of_classes + 1);
+  return std::move(e.features);
 }
 
 /*!

@@ -1,0 +1,85 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef SHAPE_ANALYSIS_POINTS_COMMON_H
+#define SHAPE_ANALYSIS_POINTS_COMMON_H
+
+// What the `points segment|recognize|train|evaluate` subcommands share: locations files, scans
+// read in their own coordinates, objects.ply, the names of the methods.
+
+#include "cli_common.h"
+
+#include <CGAL/Point_set_3.h>
+#include <CGAL/Point_set_object_recognition/read_point_set.h>
+#include <CGAL/Point_set_object_recognition/segment_objects.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace shape_analysis_cli {
+
+namespace PSOR = CGAL::Point_set_object_recognition;
+
+// A location of locations.csv; z is NaN when the file leaves it empty.
+typedef std::array<double, 3> Location;
+
+std::string trim(const std::string& s);
+// The trimmed cells of a CSV line (a trailing comma gives an empty last cell).
+std::vector<std::string> csv_cells(const std::string& line);
+// Reads the next line of a CSV file that is not blank, as its cells (`csv_cells()`; a UTF-8 byte
+// order mark on the first line left out); `number`: its line number. False at the end.
+bool next_csv_row(std::istream& in, std::size_t& number, std::vector<std::string>& cells);
+// The finite number of a cell; throws Cli_error `where` + why otherwise.
+double finite_number(const std::string& cell, const std::string& where);
+
+// A locations.csv: per row its location and, when the file has those columns, its label (a
+// class name, or `background`) and confidence (NaN when absent).
+struct Locations_file
+{
+  std::vector<Location> locations;
+  std::vector<std::string> labels;
+  std::vector<double> confidences;
+  bool labelled = false; // the file has the column `label`
+};
+
+// locations.csv: a header line `x,y,z` or `x,y,z,label,confidence`, then one location per line
+// (z may be empty). Throws Cli_error on anything else.
+Locations_file read_locations_file(const std::string& path);
+std::vector<Location> read_locations(const std::string& path);
+
+// The segmentation method of a command-line name (all, cc, mincut, mincut-auto) and back.
+PSOR::Segmentation_method segmentation_method(const std::string& name);
+std::string segmentation_method_name(PSOR::Segmentation_method m);
+std::string localization_method_name(PSOR::Localization_method m);
+
+// The report's "objects": per object its location, points, radius, cut and seconds.
+Json objects_report(const std::vector<std::array<double, 3>>& locations, const std::vector<PSOR::Object_segmentation>& objects);
+
+// Reads a scan in the file's coordinates; refuses an empty one and one that already has the
+// properties objects.ply adds. `read_seconds`: the time it took.
+PSOR::Point_set_read_result read_scan_to_segment(const std::string& input, CGAL::Point_set_3<Point_3>& points,
+                                                 double& read_seconds);
+
+// Stages objects.ply: the input's points in input order with their properties, 'object' (per point
+// its location's row, -1 for none), 'ground' (1 for ground), with `label` (not empty) 'label' (per
+// point its object's class index, -1 for none; an input's own integer 'label' becomes
+// 'input_label') and, unless the input has colours, colours by
+// object (grey for none). `comment`: more header comment lines.
+void stage_objects_ply(Output_files& outputs, const std::string& path, const std::string& input,
+                       const CGAL::Point_set_3<Point_3>& points, const std::vector<int>& object,
+                       const std::vector<char>& ground, const std::string& command,
+                       const std::vector<int>& label = {}, const std::string& comment = "");
+
+// Registers `points recognize` and `points train` (points_recognize_command.cpp).
+void add_points_recognize_commands(CLI::App* points, std::function<int()>& run);
+
+// Prints and returns (JSON) the recognition precision and recall per class of the labelled
+// locations of `locations_path` against the labelled objects of `labels_path` (a match within
+// `radius` metres, horizontally), as the thesis' table 4.5 (points_recognize_command.cpp).
+Json evaluate_recognition_files(const std::string& labels_path, const std::string& locations_path, double radius,
+                                double minimum_points);
+
+} // namespace shape_analysis_cli
+
+#endif // SHAPE_ANALYSIS_POINTS_COMMON_H
