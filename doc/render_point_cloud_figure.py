@@ -22,6 +22,17 @@ recognized_street.png and its small version) was made with:
         --small doc/Point_set_object_recognition/fig/recognized_street_small.png \\
         --elevation 50 --near-limit 9.5 --point-size 2 --x-range 20 75 --background-fraction 0.8
 
+The figure coloured by class (recognized_classes.png) was made the same way from the same street,
+recognized with a model trained on two other streets:
+
+    shape_analysis points generate --seed 2 --points 4000000 --length 800 --output t2.ply --truth t2.json
+    shape_analysis points generate --seed 3 --points 4000000 --length 800 --output t3.ply --truth t3.json
+    shape_analysis points train t2.ply t3.ply --labels t2.json t3.json --min-points 20 --output model.json
+    shape_analysis points recognize street.ply --model model.json --output street_classes.ply
+    doc/render_point_cloud_figure.py street_classes.ply \\
+        doc/Point_set_object_recognition/fig/recognized_classes.png --by-class \\
+        --elevation 50 --near-limit 9.5 --point-size 2 --x-range 20 75 --background-fraction 0.8
+
 (the street runs along x; its facades stand at y = -10 and y = 10 m, and --near-limit leaves out
 the one between the viewer and the street).
 """
@@ -84,6 +95,22 @@ def palette(n):
     return [base[i % len(base)] for i in range(n)]
 
 
+def class_names(path):
+    """The class names of the header comment 'label: 0 car, 1 pedestrian, ...' of a PLY file."""
+    names = {}
+    with open(path, "rb") as f:
+        for raw in f:
+            line = raw.decode("latin-1").strip()
+            if line == "end_header":
+                break
+            if line.startswith("comment label:"):
+                body = line[len("comment label:"):].split(" (-1")[0]
+                for item in body.split(","):
+                    number, _, name = item.strip().partition(" ")
+                    names[int(number)] = name
+    return names
+
+
 def save(fig, path, colours):
     """Saves the figure as a PNG file with a palette of `colours` colours."""
     from io import BytesIO
@@ -112,6 +139,10 @@ def main():
                         help="draw only the points whose x lies in this range")
     parser.add_argument("--colours", type=int, default=256,
                         help="the PNG is written with a palette of this many colours (smaller)")
+    parser.add_argument("--by-class", action="store_true",
+                        help="colour the objects by their class (the PLY's 'label' property of "
+                             "'points recognize --model', its names in the header comment), with "
+                             "a legend; objects of the class 'background' stay grey")
     parser.add_argument("--near-limit", type=float, default=None,
                         help="leave out the points nearer to the viewer than this distance from the "
                              "centre (for instance the facade between the viewer and the street)")
@@ -143,9 +174,18 @@ def main():
     colours = np.zeros((len(v), 4))
     colours[:] = (0.45, 0.45, 0.45, 1.0)
     colours[ground] = (0.78, 0.78, 0.78, 1.0)
-    lookup = dict(zip(ids, palette(len(ids))))
-    for i in ids:
-        colours[obj == i] = lookup[i]
+    legend = []
+    if args.by_class:
+        names = class_names(args.ply)
+        label = v["label"].astype(int)
+        shown = [c for c in np.unique(label[is_object & keep]) if names.get(c, "background") != "background"]
+        for c, colour in zip(shown, palette(len(shown))):
+            colours[is_object & (label == c)] = colour
+            legend.append((names.get(c, str(c)), colour))
+    else:
+        lookup = dict(zip(ids, palette(len(ids))))
+        for i in ids:
+            colours[obj == i] = lookup[i]
 
     u, w, depth = u[keep], w[keep], depth[keep]
     colours = colours[keep]
@@ -162,6 +202,9 @@ def main():
     ax.set_ylim(w.min(), w.max())
     ax.set_aspect("equal")
     ax.axis("off")
+    if legend:
+        handles = [plt.Line2D([], [], marker="s", linestyle="", color=c, label=n) for n, c in legend]
+        ax.legend(handles=handles, loc="upper left", ncol=min(len(handles), 5), fontsize=8, frameon=False)
     save(fig, args.output, args.colours)
     print("%s: %d points drawn, %d objects" % (args.output, len(sel), len(ids)))
 

@@ -77,6 +77,17 @@ segment blobby_3cc 3
   --locations "$out/street_recognized.csv" --report "$out/street_recognized.json" --verbose
 "$tool" points evaluate --truth "$out/street_objects.json" --locations "$out/street_recognized.csv" \
   --objects "$out/street_recognized.ply" --report "$out/street_recognized_evaluation.json"
+# Recognition of classes: a random forest trained on another street (seed 2, its truth as labels)
+# names the objects of the first (objects coloured by class, locations.csv with label and
+# confidence), scored per class (the thesis' table 4.5).
+"$tool" points generate --seed 2 --points 1000000 --length 400 --output "$out/street2_scan.ply" \
+  --truth "$out/street2_objects.json" --verbose
+"$tool" points train "$out/street2_scan.ply" --labels "$out/street2_objects.json" --min-points 20 \
+  --output "$out/street_model.json" --report "$out/street_model_report.json" --verbose
+"$tool" points recognize "$out/street_scan.ply" --model "$out/street_model.json" --tile-size 100 \
+  --output "$out/street_classes.ply" --locations "$out/street_classes.csv" --verbose
+"$tool" points evaluate --labels "$out/street_objects.json" --locations "$out/street_classes.csv" --min-points 20 \
+  --report "$out/street_classes_evaluation.json"
 "$tool" points background "$data/b9_training.ply" --max-extent 6 --spacing 1 --isolation-radius 1 \
   --output "$out/b9_foreground.ply" --report "$out/b9_foreground.json" --verbose
 
@@ -84,4 +95,4 @@ echo
 echo "Coloured segmentations (per-face colours) and partition functions (per-vertex colours) in $out:"
 ls -1 "$out"/*.ply "$out"/coseg/*.ply "$out"/coseg_symmetric/*.ply
 echo "Symmetrized and enhanced meshes: $out/cow_symmetric.off, $out/cow_asymmetry_tripled.off"
-echo "Point clouds: $out/street_scan.ply (objects: $out/street_objects.json), $out/street_foreground.ply, $out/street_segmented.ply, $out/street_recognized.ply (in tiles), $out/b9_foreground.ply"
+echo "Point clouds: $out/street_scan.ply (objects: $out/street_objects.json), $out/street_foreground.ply, $out/street_segmented.ply, $out/street_recognized.ply (in tiles), $out/street_classes.ply (coloured by class), $out/b9_foreground.ply"
