@@ -10,6 +10,20 @@ file(MAKE_DIRECTORY "${WORK}")
 
 include(${CMAKE_CURRENT_LIST_DIR}/run_tool.cmake)
 
+# expect_recognition(locations what least): scores a labelled locations.csv of street 2 against
+# its truth (objects with >= 20 points) and fails when precision or recall is below `least`.
+function(expect_recognition locations what least)
+  run_tool(points evaluate --labels "${WORK}/truth2.json" --locations "${WORK}/${locations}" --min-points 20
+           --report "${WORK}/evaluate_${locations}.json")
+  file(READ "${WORK}/evaluate_${locations}.json" evaluation)
+  string(JSON precision GET "${evaluation}" recognition all precision)
+  string(JSON recall GET "${evaluation}" recognition all recall)
+  message(STATUS "${what}: precision ${precision}, recall ${recall}")
+  if(precision LESS ${least} OR recall LESS ${least})
+    message(FATAL_ERROR "${what}: precision ${precision}, recall ${recall}, expected at least ${least}")
+  endif()
+endfunction()
+
 foreach(seed 1 2)
   run_tool(points generate --points 600000 --length 150 --seed ${seed} -q --output "${WORK}/street${seed}.ply"
            --truth "${WORK}/truth${seed}.json" --streets "${WORK}/map${seed}.osm" --crs EPSG:32618
@@ -70,16 +84,8 @@ foreach(p "property int label" "property int input_label" "comment label: 0 ")
   endif()
 endforeach()
 
-run_tool(points evaluate --labels "${WORK}/truth2.json" --locations "${WORK}/locations.csv" --min-points 20
-         --report "${WORK}/evaluate.json")
-file(READ "${WORK}/evaluate.json" evaluation)
-string(JSON precision GET "${evaluation}" recognition all precision)
-string(JSON recall GET "${evaluation}" recognition all recall)
-message(STATUS "recognition of street 2 by the forest of street 1: precision ${precision}, recall ${recall}")
-# 17 classes (with background): chance is below 0.1; measured 0.57 / 0.65.
-if(precision LESS 0.4 OR recall LESS 0.4)
-  message(FATAL_ERROR "recognition precision ${precision}, recall ${recall}")
-endif()
+# 17 classes (with background): chance is below 0.1; measured 0.66 / 0.59.
+expect_recognition(locations.csv "the forest of street 1" 0.4)
 
 # The SVM (its default features: shape, column): a model of kind svm that recognizes street 2.
 run_tool(points train "${WORK}/street1.ply" --labels "${WORK}/truth1.json" --min-points 20 --classifier svm -q
@@ -92,15 +98,7 @@ if(NOT kind STREQUAL "svm" OR groups MATCHES "spin")
 endif()
 run_tool(points recognize "${WORK}/street2.ply" --model "${WORK}/model_svm.json" -q --output "${WORK}/objects_svm.ply"
          --locations "${WORK}/locations_svm.csv")
-run_tool(points evaluate --labels "${WORK}/truth2.json" --locations "${WORK}/locations_svm.csv" --min-points 20
-         --report "${WORK}/evaluate_svm.json")
-file(READ "${WORK}/evaluate_svm.json" evaluation)
-string(JSON precision GET "${evaluation}" recognition all precision)
-string(JSON recall GET "${evaluation}" recognition all recall)
-message(STATUS "svm: precision ${precision}, recall ${recall}")
-if(precision LESS 0.3 OR recall LESS 0.3)
-  message(FATAL_ERROR "recognition by the svm: precision ${precision}, recall ${recall}")
-endif()
+expect_recognition(locations_svm.csv "the svm of street 1" 0.3) # measured 0.60 / 0.62
 
 # Context: a street map gives a second stage; its model needs the scan's map to recognize.
 set(map_options --crs EPSG:32618 --scan-origin 583000,4507000)
@@ -115,15 +113,7 @@ if(NOT context_names EQUAL expected)
 endif()
 run_tool(points recognize "${WORK}/street2.ply" --model "${WORK}/model_context.json" --streets "${WORK}/map2.osm"
          ${map_options} -q --output "${WORK}/objects_context.ply" --locations "${WORK}/locations_context.csv")
-run_tool(points evaluate --labels "${WORK}/truth2.json" --locations "${WORK}/locations_context.csv" --min-points 20
-         --report "${WORK}/evaluate_context.json")
-file(READ "${WORK}/evaluate_context.json" evaluation)
-string(JSON precision GET "${evaluation}" recognition all precision)
-string(JSON recall GET "${evaluation}" recognition all recall)
-message(STATUS "with context: precision ${precision}, recall ${recall}")
-if(precision LESS 0.4 OR recall LESS 0.4)
-  message(FATAL_ERROR "recognition with context: precision ${precision}, recall ${recall}")
-endif()
+expect_recognition(locations_context.csv "the forest of street 1 with context" 0.4) # measured 0.63 / 0.68
 file(READ "${WORK}/train_labels1.csv.json" report)
 string(JSON note GET "${report}" context)
 if(NOT note MATCHES "left out")
