@@ -132,10 +132,10 @@ Scan_examples scan_examples(const std::string& input, const std::vector<Labelled
 
 // The second stage (thesis section 4.3.4): context grids learned from the true objects of every
 // scan, the context features of every example from them, a classifier trained on the examples'
-// selected columns followed by their context. Scans are set side by side (10,000 km apart along x)
+// selected columns (`rows`, the first stage's) followed by their context. Scans are set side by side (10,000 km apart along x)
 // so that the objects of one never count as neighbours of another's.
 void train_context(Recognition_model& model, const std::vector<Scan_examples>& scans,
-                   const std::vector<PSOR::Street_map>& maps, const std::vector<std::vector<double>>& rows,
+                   const std::vector<PSOR::Street_map>& maps, std::vector<std::vector<double>> rows,
                    const std::vector<std::size_t>& labels, const Train_options& o)
 {
   const double apart = 1e7;
@@ -159,17 +159,14 @@ void train_context(Recognition_model& model, const std::vector<Scan_examples>& s
     }
   }
   const PSOR::Street_map map(streets);
-  PSOR::Context_grids grids;
-  grids.learn(objects, model.classes.size(), map);
-  std::ostringstream text;
-  grids.save(text);
-  model.grids_text = text.str();
-  const PSOR::Context_features context = PSOR::context_features(at, map, grids, objects);
+  auto grids = std::make_shared<PSOR::Context_grids>();
+  grids->learn(objects, model.classes.size(), map);
+  model.grids = grids;
+  const PSOR::Context_features context = PSOR::context_features(at, map, *grids, objects);
   model.context_names = context.names;
-  std::vector<std::vector<double>> with = model.selected(rows);
-  for(std::size_t k = 0; k < with.size(); ++k)
-    with[k].insert(with[k].end(), context.values[k].begin(), context.values[k].end());
-  model.train_context(o.classifier, with, labels, o.trees, o.seed);
+  for(std::size_t k = 0; k < rows.size(); ++k)
+    rows[k].insert(rows[k].end(), context.values[k].begin(), context.values[k].end());
+  model.train_context(o.classifier, rows, labels, o.trees, o.seed);
 }
 
 int run_train(const Train_options& o)
@@ -247,13 +244,15 @@ int run_train(const Train_options& o)
   model.select_columns();
   progress.stage("training a " + o.classifier + " classifier on " + std::to_string(rows.size()) + " examples of " +
                  std::to_string(model.columns.size()) + " features");
-  model.train(o.classifier, model.selected(rows), labels, o.trees, o.seed);
+  std::vector<std::vector<double>> chosen = model.selected(rows); // the features of the model
+  rows.clear();
+  model.train(o.classifier, chosen, labels, o.trees, o.seed);
   std::string context_note = "not asked for";
   if(context && maps.empty())
     context_note = "left out: no street map (--streets)";
   else if(context) {
     progress.stage("context: grids of the labelled objects, a second classifier");
-    train_context(model, per_scan, maps, rows, labels, o);
+    train_context(model, per_scan, maps, std::move(chosen), labels, o);
     context_note = "used: street distance and class prediction grids";
   }
   const double seconds = work.seconds();
@@ -278,7 +277,7 @@ int run_train(const Train_options& o)
   outputs.commit();
   progress.done();
   std::cout << o.output << ": a " << model.kind << " classifier of " << model.classes.size() << " classes (and background) "
-            << "trained on " << rows.size() << " examples of " << o.inputs.size() << " scans in " << seconds
+            << "trained on " << labels.size() << " examples of " << o.inputs.size() << " scans in " << seconds
             << " s; context " << context_note << "\n";
   return 0;
 }
@@ -305,19 +304,17 @@ struct Recognize_options
 void classify_with_context(const Recognition_model& model, const PSOR::Street_map& map,
                            PSOR::Object_recognition_result& r)
 {
-  PSOR::Context_grids grids;
-  std::istringstream in(model.grids_text);
-  grids.load(in);
   std::vector<PSOR::Labelled_location> first(r.locations.size());
   std::vector<std::array<double, 3>> at(r.locations.size());
   for(std::size_t k = 0; k < first.size(); ++k) {
     at[k] = first[k].position = r.locations[k].position;
     first[k].label = r.labels[k];
   }
-  const PSOR::Context_features context = PSOR::context_features(at, map, grids, first);
+  const PSOR::Context_features context = PSOR::context_features(at, map, *model.grids, first);
   const Model_classifier second = model.context_classifier();
+  std::vector<std::vector<double>> rows = model.selected(r.features);
   for(std::size_t k = 0; k < at.size(); ++k) {
-    std::vector<double> row = model.selected({r.features[k]}).front();
+    std::vector<double>& row = rows[k];
     row.insert(row.end(), context.values[k].begin(), context.values[k].end());
     r.labels[k] = second.predict(row, r.confidences[k]);
   }

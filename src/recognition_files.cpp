@@ -196,6 +196,8 @@ std::vector<std::string> checked_feature_groups(const std::vector<std::string>& 
 
 std::size_t Model_classifier::predict(const std::vector<double>& row, double& confidence) const
 {
+  if(m_columns.empty())
+    return (*m_predict)(row, confidence);
   std::vector<double> x;
   x.reserve(m_columns.size());
   for(std::size_t c : m_columns)
@@ -285,10 +287,7 @@ Model_classifier Recognition_model::context_classifier() const
 {
   if(!m_context_predict)
     m_context_predict = load_classifier(kind, context_classifier_text);
-  std::vector<std::size_t> all(columns.size() + context_names.size());
-  for(std::size_t c = 0; c < all.size(); ++c)
-    all[c] = c;
-  return Model_classifier(m_context_predict, all);
+  return Model_classifier(m_context_predict, {}); // every column: selected features, then context
 }
 
 std::string Recognition_model::label_comment() const
@@ -310,8 +309,11 @@ void Recognition_model::write(std::ostream& out) const
   j["columns"] = columns;
   j["classifier_kind"] = kind;
   j["classifier"] = classifier_text;
-  if(context)
-    j["context"] = {{"grids", grids_text}, {"names", context_names}, {"classifier", context_classifier_text}};
+  if(context) {
+    std::ostringstream text;
+    grids->save(text);
+    j["context"] = {{"grids", text.str()}, {"names", context_names}, {"classifier", context_classifier_text}};
+  }
   out << j.dump(1) << '\n';
 }
 
@@ -351,6 +353,7 @@ Recognition_model read_recognition_model(const std::string& path)
   if(!j.is_object() || j.value("format", std::string()) != model_format)
     throw Cli_error(path + ": not a model file of 'points train' (no \"format\": \"" + std::string(model_format) + "\")");
   Recognition_model m;
+  std::string grids_text;
   try {
     const int version = j.at("version").get<int>();
     if(version != 1)
@@ -364,7 +367,7 @@ Recognition_model read_recognition_model(const std::string& path)
     if(j.contains("context")) {
       const Json& c = j.at("context");
       m.context = true;
-      m.grids_text = c.at("grids").get<std::string>();
+      grids_text = c.at("grids").get<std::string>();
       m.context_names = c.at("names").get<std::vector<std::string>>();
       m.context_classifier_text = c.at("classifier").get<std::string>();
     }
@@ -382,10 +385,11 @@ Recognition_model read_recognition_model(const std::string& path)
     m.classifier(); // loads and checks it
     if(m.context) {
       m.context_classifier();
-      CGAL::Point_set_object_recognition::Context_grids g;
-      std::istringstream in(m.grids_text);
-      g.load(in);
-      if(g.number_of_classes() != m.classes.size() || m.context_names.size() != m.classes.size() + 1)
+      auto g = std::make_shared<CGAL::Point_set_object_recognition::Context_grids>();
+      std::istringstream in(grids_text);
+      g->load(in);
+      m.grids = g;
+      if(g->number_of_classes() != m.classes.size() || m.context_names.size() != m.classes.size() + 1)
         throw Cli_error(path + ": its context grids or features do not match its classes");
     }
   } catch(const CGAL::Shape_analysis::Bad_input& e) {

@@ -31,6 +31,7 @@
 
 #include "cli_common.h"
 
+#include <CGAL/Point_set_object_recognition/Object_context.h>
 #include <CGAL/Point_set_object_recognition/Street_map.h>
 
 #include <array>
@@ -70,6 +71,7 @@ public:
     : m_predict(std::move(predict)), m_columns(std::move(columns))
   {}
   bool is_trained() const { return m_predict != nullptr; }
+  // The class of the columns of `row` (all of them when no column was given).
   std::size_t predict(const std::vector<double>& row, double& confidence) const;
 
 private:
@@ -84,7 +86,8 @@ struct Recognition_model
   std::string kind;          // knn, random_forest, svm
   std::string classifier_text; // the classifier's model text
   bool context = false;        // a second stage with context features
-  std::string grids_text, context_classifier_text;
+  std::shared_ptr<const CGAL::Point_set_object_recognition::Context_grids> grids;
+  std::string context_classifier_text;
   std::vector<std::string> context_names;
 
   // The columns of the feature groups (from feature_names).
