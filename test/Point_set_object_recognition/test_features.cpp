@@ -411,8 +411,13 @@ TEST(ObjectRecognition, RecognizeObjectsWithAClassifier)
   const PSOR::Object_recognition_result tiles =
       PSOR::recognize_objects(scan, PSOR::parameters::object_classifier(forest).tile_size(30.0));
   EXPECT_EQ(tiles.labels.size(), tiles.locations.size());
-  EXPECT_TRUE(PSOR::recognize_objects(scan, PSOR::parameters::tile_size(1000.0)).labels.empty());
-  EXPECT_TRUE(PSOR::recognize_objects(scan, PSOR::parameters::tile_size(1000.0)).features.empty());
+  const PSOR::Object_recognition_result plain = PSOR::recognize_objects(scan, PSOR::parameters::tile_size(1000.0));
+  EXPECT_TRUE(plain.labels.empty());
+  EXPECT_TRUE(plain.features.empty());
+  // The features' segmentations share the objects' graph: the objects stay those without a classifier.
+  EXPECT_EQ(plain.object_of_point, r.object_of_point);
+  const PSOR::Object_features serial = PSOR::extract_object_features(kept, r.locations, PSOR::parameters::number_of_threads(1));
+  EXPECT_EQ(serial.values, direct.values) << "the same rows for any number of threads";
   EXPECT_THROW(PSOR::recognize_objects(scan, PSOR::parameters::object_classifier(PSOR::Knn_object_classifier(1))),
                CGAL::Shape_analysis::Bad_input);
 }

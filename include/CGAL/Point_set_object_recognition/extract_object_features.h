@@ -11,6 +11,7 @@
 #include <CGAL/Point_set_object_recognition/internal/Horizontal_buckets.h>
 #include <CGAL/Point_set_object_recognition/segment_objects.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/internal/Parallel.h>
 #include <CGAL/Shape_analysis/parameters.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -99,17 +101,32 @@ inline std::array<double, 6> shape_features(const std::vector<P3>& p, const std:
   // The major direction (angle of the covariance's first eigenvector), then columns along it.
   const double angle = 0.5 * std::atan2(2 * cxy, cxx - cyy), ux = std::cos(angle), uy = std::sin(angle);
   // The columns start at the smallest coordinates along those directions.
-  double u0 = std::numeric_limits<double>::infinity(), v0 = u0;
+  double u0 = std::numeric_limits<double>::infinity(), v0 = u0, u1 = -u0, v1 = -u0;
   for(std::size_t i : members) {
-    const double dx = p[i][0] - mx, dy = p[i][1] - my;
-    u0 = (std::min)(u0, dx * ux + dy * uy), v0 = (std::min)(v0, dy * ux - dx * uy);
+    const double dx = p[i][0] - mx, dy = p[i][1] - my, u = dx * ux + dy * uy, v = dy * ux - dx * uy;
+    u0 = (std::min)(u0, u), v0 = (std::min)(v0, v), u1 = (std::max)(u1, u), v1 = (std::max)(v1, v);
   }
-  std::unordered_map<std::uint64_t, double> top; // column -> highest point above the base
   const auto cell = [](double v) { return std::uint64_t(std::int64_t(v / volume_cell)); };
-  for(std::size_t i : members) {
+  const std::uint64_t nu = cell(u1 - u0) + 1, nv = cell(v1 - v0) + 1;
+  const auto column = [&](std::size_t i) {
     const double dx = p[i][0] - mx, dy = p[i][1] - my;
-    const std::uint64_t key = cell(dx * ux + dy * uy - u0) | (cell(dy * ux - dx * uy - v0) << 32);
-    auto it = top.emplace(key, p[i][2] - at[2]).first;
+    return std::make_pair(cell(dx * ux + dy * uy - u0), cell(dy * ux - dx * uy - v0));
+  };
+  if(nu * nv <= 4 * members.size() + 4096) { // a dense grid of columns: each its highest point
+    std::vector<double> top(std::size_t(nu * nv), -std::numeric_limits<double>::infinity());
+    for(std::size_t i : members) {
+      const auto c = column(i);
+      double& t = top[std::size_t(c.first * nv + c.second)];
+      t = (std::max)(t, p[i][2] - at[2]);
+    }
+    for(double t : top)
+      f[1] += volume_cell * volume_cell * (std::max)(0.0, t);
+    return f;
+  }
+  std::unordered_map<std::uint64_t, double> top; // a sparse one: column -> highest point
+  for(std::size_t i : members) {
+    const auto c = column(i);
+    auto it = top.emplace(c.first | (c.second << 32), p[i][2] - at[2]).first;
     it->second = (std::max)(it->second, p[i][2] - at[2]);
   }
   for(const auto& c : top)
@@ -175,33 +192,67 @@ inline std::array<double, 5> column_features(const std::vector<P3>& p, const Hor
   return f;
 }
 
+// The two other segmentations of the features: the min-cut at 4 m, all points within 2 m.
+inline std::array<Segment_objects_options, 2> other_feature_segmentations(const Segment_objects_options& automatic)
+{
+  std::array<Segment_objects_options, 2> o{{automatic, automatic}};
+  o[0].segmentation_method = Segmentation_method::MIN_CUT;
+  o[0].background_radius = 4.0;
+  o[1].segmentation_method = Segmentation_method::ALL_WITHIN_RADIUS;
+  o[1].background_radius = 2.0;
+  return o;
+}
+
+// Whether one segmenter built for the `automatic` segmentation serves the two others too (it
+// does with the default, the automatic radius, which looks farther than the min-cut at 4 m);
+// then the objects of `automatic` are exactly those of its own segment_objects().
+inline bool features_share_segmenter(const Segment_objects_options& automatic)
+{
+  return uses_graph(automatic) &&
+         segmentation_reach(automatic) >= segmentation_reach(other_feature_segmentations(automatic)[0]);
+}
+
+// The segmenter of the features' segmentations (see features_share_segmenter()).
+inline std::unique_ptr<Object_segmenter> feature_segmenter(const std::vector<P3>& p, const std::vector<P3>& at,
+                                                           const Segment_objects_options& automatic)
+{
+  const double reach = features_share_segmenter(automatic)
+                         ? segmentation_reach(automatic)
+                         : segmentation_reach(other_feature_segmentations(automatic)[0]);
+  return std::unique_ptr<Object_segmenter>(new Object_segmenter(p, at, automatic, reach, true));
+}
+
 // The features of the objects based at `at` among the points `p` (see extract_object_features()):
 // `automatic` the options of the first segmentation, whose result may be given (`computed`, one
-// object per location) rather than computed again.
+// object per location) rather than computed again; `segmenter` the feature_segmenter() of `p`
+// and `at` when the caller has it.
 inline Object_features object_features(const std::vector<P3>& p, const std::vector<P3>& at,
                                        const Segment_objects_options& automatic, double spin_image_radius,
-                                       const std::vector<Object_segmentation>* computed = nullptr)
+                                       const std::vector<Object_segmentation>* computed = nullptr,
+                                       const Object_segmenter* segmenter = nullptr)
 {
-  Segment_objects_options min_cut = automatic, within = automatic;
-  min_cut.segmentation_method = Segmentation_method::MIN_CUT;
-  min_cut.background_radius = 4.0;
-  within.segmentation_method = Segmentation_method::ALL_WITHIN_RADIUS;
-  within.background_radius = 2.0;
-  const std::array<std::pair<const char*, const Segment_objects_options*>, 3> kinds{
-      {{"automatic.", &automatic}, {"min_cut_4m.", &min_cut}, {"within_2m.", &within}}};
+  std::unique_ptr<Object_segmenter> own;
+  if(!segmenter) {
+    own = feature_segmenter(p, at, automatic);
+    segmenter = own.get();
+  }
+  const std::array<Segment_objects_options, 2> others = other_feature_segmentations(automatic);
   std::vector<std::vector<Object_segmentation>> segmentations;
-  for(const auto& k : kinds)
-    if(computed && k.second == &automatic)
-      segmentations.push_back(*computed);
-    else
-      segmentations.push_back(segment_objects(p, at, *k.second).objects);
+  if(computed)
+    segmentations.push_back(*computed);
+  else if(features_share_segmenter(automatic))
+    segmentations.push_back(segmenter->segment(at, automatic).objects);
+  else
+    segmentations.push_back(segment_objects(p, at, automatic).objects);
+  for(const Segment_objects_options& o : others)
+    segmentations.push_back(segmenter->segment(at, o).objects);
 
   Object_features r;
   const char* shape_names[] = {"points", "volume", "mean_height", "height_deviation", "major_deviation",
                                "minor_deviation"};
-  for(const auto& k : kinds)
+  for(const char* kind : {"automatic.", "min_cut_4m.", "within_2m."})
     for(const char* name : shape_names)
-      r.names.push_back(std::string(k.first) + name);
+      r.names.push_back(std::string(kind) + name);
   for(int i = 0; i < spin_radial_bins; ++i)
     for(int j = 0; j < spin_height_bins; ++j)
       r.names.push_back("spin." + std::to_string(i) + "." + std::to_string(j));
@@ -209,7 +260,8 @@ inline Object_features object_features(const std::vector<P3>& p, const std::vect
     r.names.push_back(std::string("column.") + name);
   const Horizontal_buckets cells(p, (std::max)(spin_image_radius, 2.0));
   r.values.resize(at.size());
-  for(std::size_t l = 0; l < at.size(); ++l) {
+  CGAL::Shape_analysis::internal::Parallel_workspaces<char> parallel(automatic.number_of_threads);
+  parallel.for_each(0, at.size(), [&](std::size_t l, char&) { // rows apart: the same for any number of threads
     std::vector<double>& row = r.values[l];
     for(const std::vector<Object_segmentation>& s : segmentations) {
       const std::array<double, 6> f = shape_features(p, s[l].points, at[l]);
@@ -219,7 +271,7 @@ inline Object_features object_features(const std::vector<P3>& p, const std::vect
     row.insert(row.end(), spin.begin(), spin.end());
     const std::array<double, 5> column = column_features(p, cells, at[l]);
     row.insert(row.end(), column.begin(), column.end());
-  }
+  });
   return r;
 }
 

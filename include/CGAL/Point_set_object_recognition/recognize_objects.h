@@ -27,6 +27,7 @@
 #include <functional>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <type_traits>
 #include <vector>
@@ -321,10 +322,14 @@ void process_tile(std::size_t t, long reach, const Tile_grid& grid, const std::v
     std::vector<P3> kept(above.size());
     for(std::size_t k = 0; k < above.size(); ++k)
       kept[k] = q[above[k]];
-    Segmentation_result s = internal::segment_objects(kept, own, o.segmentation);
+    // With a classifier, the segmenter of the features serves this segmentation when it can.
+    std::unique_ptr<Object_segmenter> shared;
+    if(o.classify && features_share_segmenter(o.segmentation))
+      shared = feature_segmenter(kept, own, o.segmentation);
+    Segmentation_result s = shared ? shared->segment(own, o.segmentation) : segment_objects(kept, own, o.segmentation);
     if(o.classify) { // the features of the tile's objects among its own points, this segmentation reused
       Object_features f = object_features(kept, own, o.segmentation, Extract_object_features_options().spin_image_radius,
-                                          &s.objects);
+                                          &s.objects, shared.get());
       out.labels.resize(own.size());
       out.confidences.resize(own.size());
       for(std::size_t k = 0; k < own.size(); ++k)

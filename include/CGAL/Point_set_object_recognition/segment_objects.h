@@ -137,29 +137,74 @@ inline Object_segmentation to_public(Segmentation_output&& s)
   return r;
 }
 
+// Whether the segmentation `o` needs the graph of the index.
+inline bool uses_graph(const Segmentation_options& o)
+{
+  return o.segmentation_method == Segmentation_method::MIN_CUT ||
+         o.segmentation_method == Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS;
+}
+
+inline const std::vector<P3>& nonempty_points(const std::vector<P3>& p)
+{
+  if(p.empty())
+    throw Bad_input("segment_objects: the point cloud is empty");
+  return p;
+}
+
+// The columns of the points and the graph index around a set of locations, built once and shared
+// by several segmentations of the objects there: those whose methods and radii look no farther
+// than `reach` and whose graph options (neighbours, cells, threads) are those of `graph_options`.
+class Object_segmenter
+{
+public:
+  Object_segmenter(const std::vector<P3>& p, const std::vector<P3>& locations, const Segmentation_options& graph_options,
+                   double reach, bool with_graph)
+    : m_start(std::chrono::steady_clock::now()), m_options(graph_options), m_columns(nonempty_points(p)),
+      m_index((m_columns.check(locations), m_columns), locations, reach, m_options, with_graph),
+      m_reach(reach), m_graph(with_graph)
+  {
+    m_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+  }
+  Object_segmenter(const Object_segmenter&) = delete;
+  Object_segmenter& operator=(const Object_segmenter&) = delete;
+
+  // Whether it can segment with `o` (same graph options assumed).
+  bool serves(const Segmentation_options& o) const
+  {
+    return segmentation_reach(o) <= m_reach && (m_graph || !uses_graph(o));
+  }
+
+  // The objects at `locations` (those given at construction) by the segmentation `o`.
+  Segmentation_result segment(const std::vector<P3>& locations, const Segmentation_options& o) const
+  {
+    const auto start = std::chrono::steady_clock::now();
+    Segmentation_result r;
+    r.preparation_seconds = m_seconds;
+    std::vector<Segmentation_output> out(locations.size());
+    CGAL::Shape_analysis::internal::Parallel_workspaces<Segmentation_workspace> parallel(o.number_of_threads);
+    parallel.for_each(0, locations.size(), [&](std::size_t k, Segmentation_workspace& w) {
+      out[k] = segment_one(m_index, locations[k], o, w);
+    });
+    claim_points(m_columns.points(), locations, out, r.object_of_point);
+    for(Segmentation_output& s : out)
+      r.objects.push_back(to_public(std::move(s)));
+    r.seconds = m_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+  }
+
+private:
+  std::chrono::steady_clock::time_point m_start;
+  Segmentation_options m_options; // the index keeps a reference to it
+  Point_columns m_columns;
+  Segmentation_index m_index;
+  double m_reach = 0, m_seconds = 0;
+  bool m_graph = false;
+};
+
 inline Segmentation_result segment_objects(const std::vector<P3>& p, const std::vector<P3>& locations,
                                            const Segmentation_options& o)
 {
-  const auto start = std::chrono::steady_clock::now();
-  if(p.empty())
-    throw Bad_input("segment_objects: the point cloud is empty");
-  const Point_columns columns(p);
-  columns.check(locations);
-  const bool graph = o.segmentation_method == Segmentation_method::MIN_CUT ||
-                     o.segmentation_method == Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS;
-  const Segmentation_index index(columns, locations, segmentation_reach(o), o, graph);
-  Segmentation_result r;
-  r.preparation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::vector<Segmentation_output> out(locations.size());
-  CGAL::Shape_analysis::internal::Parallel_workspaces<Segmentation_workspace> parallel(o.number_of_threads);
-  parallel.for_each(0, locations.size(), [&](std::size_t k, Segmentation_workspace& w) {
-    out[k] = segment_one(index, locations[k], o, w);
-  });
-  claim_points(p, locations, out, r.object_of_point);
-  for(Segmentation_output& s : out)
-    r.objects.push_back(to_public(std::move(s)));
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return r;
+  return Object_segmenter(p, locations, o, segmentation_reach(o), uses_graph(o)).segment(locations, o);
 }
 
 } // namespace internal
