@@ -61,15 +61,23 @@ Json objects_report(const std::vector<std::array<double, 3>>& locations, const s
 PSOR::Point_set_read_result read_scan_to_segment(const std::string& input, CGAL::Point_set_3<Point_3>& points,
                                                  double& read_seconds);
 
-// Stages objects.ply: the input's points in input order with their properties, 'object' (per point
-// its location's row, -1 for none), 'ground' (1 for ground), with `label` (not empty) 'label' (per
-// point its object's class index, -1 for none; an input's own integer 'label' becomes
-// 'input_label') and, unless the input has colours, colours by
-// object (grey for none). `comment`: more header comment lines.
-void stage_objects_ply(Output_files& outputs, const std::string& path, const std::string& input,
-                       const CGAL::Point_set_3<Point_3>& points, const std::vector<int>& object,
-                       const std::vector<char>& ground, const std::string& command,
-                       const std::vector<int>& label = {}, const std::string& comment = "");
+// Refuses (Usage_error) a name of the segmented points that ends neither in .ply nor in .las.
+void require_objects_extension(const std::string& path);
+
+// Stages the segmented points (objects_output.cpp), PLY or LAS by the extension of `path`: the
+// input's points in input order with their properties, 'object' (per point its location's row, -1
+// for none), 'ground' (1 for ground), with `label` (not empty) 'label' (per point its object's
+// class index, -1 for none; an input's own integer 'label' becomes 'input_label') and, unless the
+// input has colours, colours by class or by object (grey for none). PLY: `comment` adds header
+// comment lines. LAS (1.4, point format 7, millimetres): 'object', 'ground', 'label' as extra bytes,
+// the classification 2 for the ground, 64 + class for the points of classified objects (named
+// after `class_names` in the Classification Lookup record), 1 for the others; the input's
+// classification becomes 'input_classification'.
+void stage_objects_file(Output_files& outputs, const std::string& path, const std::string& input,
+                        const CGAL::Point_set_3<Point_3>& points, const std::vector<int>& object,
+                        const std::vector<char>& ground, const std::string& command,
+                        const std::vector<int>& label = {}, const std::string& comment = "",
+                        const std::vector<std::string>& class_names = {});
 
 // Registers `points recognize` and `points train` (points_recognize_command.cpp).
 void add_points_recognize_commands(CLI::App* points, std::function<int()>& run);

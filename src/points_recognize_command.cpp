@@ -4,7 +4,7 @@
 // shape_analysis points train SCAN... --labels labels.csv... [--classifier forest|svm|knn1|knn5]
 //                                [--features shape,column,spin,segmentations,context] --output model.json
 //                                [--report R.json]
-// shape_analysis points recognize SCAN --output objects.ply [--model model.json]
+// shape_analysis points recognize SCAN --output objects.ply|.las [--model model.json]
 //                                    [--locations locations.csv] [--tile-size 100] --report R.json
 //
 // Recognition of the objects of scans (thesis chapter 4): training a classifier on labelled scans
@@ -383,7 +383,7 @@ int run_recognize(const Recognize_options& o)
   outputs.add_input(o.input);
   if(!o.model.empty())
     outputs.add_input(o.model);
-  require_extension(o.output, ".ply", "segmented points");
+  require_objects_extension(o.output);
   outputs.add_output(o.output, "segmented points");
   if(!o.locations.empty()) {
     require_extension(o.locations, ".csv", "locations");
@@ -449,8 +449,12 @@ int run_recognize(const Recognize_options& o)
     }
     ground[k] = r.kind[k] == PSOR::Point_kind::GROUND;
   }
-  stage_objects_ply(outputs, o.output, o.input, points, object, ground, "points recognize", label,
-                    model ? model->label_comment() : std::string());
+  std::vector<std::string> class_names;
+  if(model)
+    for(std::size_t c = 0; c <= model->classes.size(); ++c)
+      class_names.push_back(model->class_name(c));
+  stage_objects_file(outputs, o.output, o.input, points, object, ground, "points recognize", label,
+                     model ? model->label_comment() : std::string(), class_names);
   if(!o.locations.empty())
     outputs.stage(o.locations, false, [&](std::ostream& out) { write_recognized_locations(out, r, model.get()); });
   if(!o.report.empty()) {
@@ -549,10 +553,12 @@ void add_points_recognize_commands(CLI::App* points, std::function<int()>& run)
                  "thread; with --model, classify them.");
   recognize->add_option("input", g->input, "The scan (.ply, .xyz, .las, .bin), metres, z up")->required();
   recognize->add_option("-o,--output", g->output,
-                        "The input's points in input order (.ply) with their properties, 'object' (the 0-based row "
-                        "of the location in --locations, -1 for none), 'ground' (1: ground) and, with --model, "
-                        "'label' (the class index of the point's object; the header comment names the classes; an input "
-                        "'label' becomes 'input_label')")
+                        "The input's points in input order (.ply or .las) with their properties, 'object' (the "
+                        "0-based row of the location in --locations, -1 for none), 'ground' (1: ground) and, with "
+                        "--model, 'label' (the class index of the point's object; the PLY header comment names the "
+                        "classes; an input 'label' becomes 'input_label'). LAS 1.4, format 7: these as extra bytes, "
+                        "the classification 2 for ground, 64 + class for classified objects (named in the "
+                        "Classification Lookup record), 1 for the rest")
     ->required();
   recognize->add_option("--locations", g->locations,
                         "The locations found (.csv: a header line x,y,z, then one per line; with --model the "

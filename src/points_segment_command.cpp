@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
 // shape_analysis points segment IN --locations locations.csv --method mincut-auto|mincut|cc|all
-//                                  [--radius r] --output objects.ply --report R.json
+//                                  [--radius r] --output objects.ply|.las --report R.json
 // shape_analysis points evaluate --truth truth.json [--locations locations.csv] [--objects objects.ply]
 //                                 --report R.json
 // shape_analysis points evaluate --labels labels.csv --locations locations.csv --report R.json
@@ -192,84 +192,6 @@ PSOR::Point_set_read_result read_scan_to_segment(const std::string& input, CGAL:
   return read;
 }
 
-// Renames the integer property `from` of `ps`, if any, to `to` (as int); throws Cli_error when
-// `from` is a property of another type or `to` exists.
-void move_property_to(CGAL::Point_set_3<Point_3>& ps, const std::string& from, const std::string& to)
-{
-  const std::vector<std::string> names = ps.properties();
-  if(std::find(names.begin(), names.end(), from) == names.end())
-    return;
-  std::vector<int> values;
-  const auto take = [&](auto tag) {
-    typedef decltype(tag) T;
-    if(values.empty() && ps.template has_property_map<T>(from)) {
-      auto map = ps.template property_map<T>(from).first;
-      for(auto i : ps)
-        values.push_back(int(map[i]));
-      ps.remove_property_map(map);
-    }
-  };
-  take(int()), take((unsigned char)0), take((unsigned int)0), take(short()), take((unsigned short)0), take((signed char)0);
-  if(values.size() != ps.size())
-    throw Cli_error("the input's '" + from + "' property is not an integer property");
-  auto added = ps.template add_property_map<int>(to, -1);
-  if(!added.second)
-    throw Cli_error("the input has both '" + from + "' and '" + to + "' properties");
-  std::size_t k = 0;
-  for(auto i : ps)
-    added.first[i] = values[k++];
-}
-
-// Stages objects.ply: the input's points in input order with their properties, 'object' (per point
-// its location's row, -1 for none), 'ground' (1 for ground) and, unless the input has colours,
-// colours by object (grey for none).
-void stage_objects_ply(Output_files& outputs, const std::string& path, const std::string& input,
-                       const CGAL::Point_set_3<Point_3>& points, const std::vector<int>& object,
-                       const std::vector<char>& ground, const std::string& command, const std::vector<int>& label,
-                       const std::string& comment)
-{
-  outputs.stage(path, true, [&](std::ostream& out) {
-    CGAL::Point_set_3<Point_3> result = points;
-    auto object_map = result.add_property_map<int>("object", -1);
-    auto ground_map = result.add_property_map<unsigned char>("ground", 0);
-    if(!object_map.second || !ground_map.second)
-      throw Cli_error(input + " already has an 'object' or a 'ground' property");
-    CGAL::Point_set_3<Point_3>::Property_map<int> label_map;
-    if(!label.empty()) {
-      move_property_to(result, "label", "input_label"); // e.g. the true classes of a generated scan
-      auto added = result.add_property_map<int>("label", -1);
-      if(!added.second)
-        throw Cli_error(input + " already has a 'label' property");
-      label_map = added.first;
-    }
-    const bool coloured = !result.has_property_map<unsigned char>("red") && !result.has_property_map<unsigned char>("green") &&
-                          !result.has_property_map<unsigned char>("blue");
-    CGAL::Point_set_3<Point_3>::Property_map<unsigned char> red, green, blue;
-    if(coloured) {
-      red = result.add_property_map<unsigned char>("red", 0).first;
-      green = result.add_property_map<unsigned char>("green", 0).first;
-      blue = result.add_property_map<unsigned char>("blue", 0).first;
-    }
-    std::size_t k = 0;
-    for(auto i : result) {
-      object_map.first[i] = object[k];
-      ground_map.first[i] = ground[k] ? 1 : 0;
-      if(!label.empty())
-        label_map[i] = label[k];
-      if(coloured) {
-        const int by = label.empty() ? object[k] : label[k]; // colours by class when there are classes
-        const auto c = by < 0 ? std::array<unsigned char, 3>{{160, 160, 160}} : label_colour(std::size_t(by) + 1);
-        red[i] = c[0], green[i] = c[1], blue[i] = c[2];
-      }
-      ++k;
-    }
-    CGAL::IO::set_mode(out, CGAL::IO::BINARY);
-    if(!CGAL::IO::write_PLY(out, result, "written by shape_analysis " + command + " (CGAL Global Shape Analysis)" +
-                                            (comment.empty() ? std::string() : "\n" + comment)))
-      throw Cli_error("cannot write " + path);
-  });
-}
-
 namespace {
 
 // The files and switches of the command; the segmentation's options with the library's defaults
@@ -289,7 +211,7 @@ int run_segment(const Segment_options& o)
   Output_files outputs;
   outputs.add_input(o.input);
   outputs.add_input(o.locations);
-  require_extension(o.output, ".ply", "segmented points");
+  require_objects_extension(o.output);
   outputs.add_output(o.output, "segmented points");
   outputs.add_optional_output(o.report, "report");
   PSOR::Segment_objects_options so = o.segmentation;
@@ -340,7 +262,7 @@ int run_segment(const Segment_options& o)
   std::vector<char> ground(points.size(), 0);
   for(std::size_t k = 0; k < ground.size(); ++k)
     ground[k] = background.kind[k] == PSOR::Point_kind::GROUND;
-  stage_objects_ply(outputs, o.output, o.input, points, object, ground, "points segment");
+  stage_objects_file(outputs, o.output, o.input, points, object, ground, "points segment");
   if(!o.report.empty()) {
     Json report = Json::object();
     report["command"] = "points segment";
@@ -567,8 +489,9 @@ void add_points_segment_commands(CLI::App* points, std::function<int()>& run)
   segment->add_option("--radius", s->segmentation.background_radius, "Background radius of mincut, radius of cc and all (m)")
     ->capture_default_str();
   segment->add_option("-o,--output", s->output,
-                      "The input's points in input order (.ply) with their properties, 'object' (the 0-based row "
-                      "of the location, -1 for none) and 'ground' (1: left out as ground)")
+                      "The input's points in input order (.ply or .las) with their properties, 'object' (the "
+                      "0-based row of the location, -1 for none) and 'ground' (1: left out as ground); LAS 1.4, "
+                      "format 7: these as extra bytes, the classification 2 for ground, 1 for the rest")
     ->required();
   segment->add_option("--report", s->report, "JSON report (seconds; per object: points, radius, cut, seconds)");
   segment->add_option("--threads", s->segmentation.number_of_threads, "Largest number of threads (0: all cores)")
@@ -595,8 +518,8 @@ void add_points_segment_commands(CLI::App* points, std::function<int()>& run)
     ->capture_default_str();
   evaluate->add_option("--locations", e->locations, "Locations to evaluate (.csv: x,y,z)");
   evaluate->add_option("--objects", e->objects,
-                       "Segmented points to evaluate (.ply written by 'points segment' on a generated scan: its "
-                       "'instance' property holds the truth)");
+                       "Segmented points to evaluate (.ply or .las written by 'points segment' or 'points "
+                       "recognize' on a generated scan: its 'instance' property holds the truth)");
   evaluate->add_option("--radius", e->radius, "Largest horizontal distance of a correct location (m)")->capture_default_str();
   evaluate->add_option("--report", e->report, "JSON report (tables 4.1 and 4.2: per class and overall)");
   evaluate->add_flag("-q,--quiet", e->quiet, "No progress on stderr");

@@ -2,15 +2,17 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
 // Reads a scan (PLY, XYZ, LAS or KITTI .bin) and prints its size, the local origin its
-// georeferenced coordinates were shifted by, its properties and its extent.
+// georeferenced coordinates were shifted by, its properties and its extent; with an output name,
+// writes it as LAS 1.4 with all its properties, in the coordinates of the file read.
 //
-//   read_point_set [scan]     (default: CGAL's b9_training.ply)
+//   read_point_set [scan] [output.las]     (default: CGAL's b9_training.ply, no output)
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Point_set_3.h>
 #include <CGAL/bounding_box.h>
 
 #include <CGAL/Point_set_object_recognition/read_point_set.h>
+#include <CGAL/Point_set_object_recognition/write_point_set.h>
 
 #include <iomanip>
 #include <iostream>
@@ -31,8 +33,12 @@ int main(int argc, char** argv)
       std::cout << ' ' << name;
     const auto box = CGAL::bounding_box(points.points().begin(), points.points().end());
     std::cout << "\nextent in the local frame: " << box << "\n";
+    if(argc > 2) { // the local origin added back: the LAS file has the coordinates read
+      PSOR::write_las_point_set(argv[2], points, PSOR::parameters::local_origin(r.offset));
+      std::cout << "written to " << argv[2] << "\n";
+    }
   } catch(const CGAL::Shape_analysis::Bad_input& e) {
-    std::cerr << "cannot use " << input << ": " << e.what() << "\n";
+    std::cerr << "cannot use " << input << ": " << e.what() << "\n"; // (or cannot write the output)
     return 1;
   }
   return 0;

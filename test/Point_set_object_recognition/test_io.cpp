@@ -9,7 +9,8 @@
 #include <CGAL/Point_set_3.h>
 
 #include <CGAL/Point_set_object_recognition/internal/Kitti_io.h>
-#include <CGAL/Point_set_object_recognition/internal/Las_io.h>
+#include <CGAL/Point_set_object_recognition/internal/Las_writer.h>
+#include <CGAL/Point_set_object_recognition/write_point_set.h>
 #include <CGAL/Point_set_object_recognition/read_point_set.h>
 
 #include <gtest/gtest.h>
@@ -22,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -365,6 +367,124 @@ TEST_F(Io, LasWithVlrAndExtraBytesPerRecordIsReadField)
   EXPECT_EQ(a.offset[1], 4999900.0);
   EXPECT_EQ(a.offset[2], 0.0);
   EXPECT_NEAR(ps.point(*ps.begin()).x(), 23.45, 1e-9);
+}
+
+TEST_F(Io, LasExtraBytesAndClassNamesRoundTrip)
+{
+  std::vector<std::array<double, 3>> world;
+  Point_set ps = utm_cloud(50, true, world);
+  auto object = ps.add_property_map<int>("object", -1).first;
+  auto ground = ps.add_property_map<unsigned char>("ground", 0).first;
+  auto score = ps.add_property_map<float>("score", 0.f).first;
+  auto height = ps.add_property_map<double>("height_above_ground", 0.).first;
+  auto delta = ps.add_property_map<short>("delta", 0).first;
+  int k = 0;
+  for(Point_set::Index i : ps) {
+    object[i] = k % 5 == 0 ? -1 : 100000 + k;
+    ground[i] = static_cast<unsigned char>(k % 2);
+    score[i] = 0.25f * float(k);
+    height[i] = 1.0 / (1 + k);
+    delta[i] = static_cast<short>(-300 * k);
+    ++k;
+  }
+  // As read with a local origin: the file has the coordinates plus that origin.
+  const std::array<double, 3> origin{{500000, 4200000, 0}};
+  for(Point_set::Index i : ps) {
+    const Point& p = ps.point(i);
+    ps.point(i) = Point(p.x() - origin[0], p.y() - origin[1], p.z());
+  }
+  PR::write_las_point_set(path("x.las"), ps,
+                          PR::parameters::local_origin(origin).class_names(
+                            std::vector<std::pair<unsigned, std::string>>{{64, "pole"}, {65, "a much too long class name"}}));
+  const Bytes b = load(path("x.las"));
+  // Format 7 (36 bytes) + int32, uint8, float, double, int16 = 55-byte records after two VLRs:
+  // the Extra Bytes record (5 descriptors of 192 bytes), the Classification Lookup (256 x 16).
+  const std::size_t vlrs = 54 + 5 * 192 + 54 + 4096;
+  EXPECT_EQ(get(b, 96, 4), 375u + vlrs);
+  EXPECT_EQ(get(b, 100, 4), 2u);
+  EXPECT_EQ(get(b, 105, 2), 55u);
+  ASSERT_EQ(b.size(), 375u + vlrs + 50 * 55);
+  EXPECT_EQ(std::string(b.begin() + 375 + 2, b.begin() + 375 + 11), "LASF_Spec");
+  EXPECT_EQ(get(b, 375 + 18, 2), 4u);
+  EXPECT_EQ(b[375 + 54 + 2], 6) << "object: int32";
+  EXPECT_EQ(std::string(b.begin() + 375 + 54 + 4, b.begin() + 375 + 54 + 10), "object");
+  const std::size_t lookup = 375 + 54 + 5 * 192 + 54;
+  EXPECT_EQ(get(b, lookup - 54 + 18, 2), 0u);
+  EXPECT_EQ(b[lookup + 64 * 16], 64);
+  EXPECT_EQ(std::string(b.begin() + lookup + 64 * 16 + 1, b.begin() + lookup + 64 * 16 + 5), "pole");
+  EXPECT_EQ(std::string(b.begin() + lookup + 65 * 16 + 1, b.begin() + lookup + 66 * 16), "a much too long");
+
+  Point_set back;
+  const PR::Point_set_read_result r = PR::read_point_set(path("x.las"), back, PR::parameters::local_origin(origin));
+  ASSERT_EQ(back.size(), 50u);
+  EXPECT_TRUE(has(r.property_names, "object") && has(r.property_names, "ground") && has(r.property_names, "delta"));
+  auto j = ps.begin();
+  for(Point_set::Index i : back) {
+    EXPECT_EQ(value<int>(back, "object", i), object[*j]);
+    EXPECT_EQ(value<unsigned char>(back, "ground", i), ground[*j]);
+    EXPECT_EQ(value<double>(back, "score", i), double(score[*j]));
+    EXPECT_EQ(value<double>(back, "height_above_ground", i), height[*j]);
+    EXPECT_EQ(value<int>(back, "delta", i), delta[*j]);
+    EXPECT_EQ(value<unsigned char>(back, "classification", i), value<unsigned char>(ps, "classification", *j));
+    EXPECT_NEAR(back.point(i).x(), ps.point(*j).x(), 0.0005) << "millimetres";
+    EXPECT_NEAR(back.point(i).y(), ps.point(*j).y(), 0.0005);
+    ++j;
+  }
+  // Bad input: nothing written.
+  std::ostringstream os;
+  EXPECT_THROW(PR::write_las_point_set(os, ps, PR::parameters::class_names(std::vector<std::pair<unsigned, std::string>>{
+                                                 {300, "x"}})),
+               CGAL::Shape_analysis::Bad_input);
+  EXPECT_THROW(PR::write_las_point_set(os, ps, PR::parameters::local_origin(std::array<double, 3>{{0, NAN, 0}})),
+               CGAL::Shape_analysis::Bad_input);
+  ps.point(*ps.begin()) = Point(3e6, 0, 0); // 3,000 km from the others: beyond 32-bit millimetres
+  EXPECT_THROW(PR::write_las_point_set(os, ps), CGAL::Shape_analysis::Bad_input);
+  EXPECT_TRUE(os.str().empty());
+  EXPECT_THROW(PR::write_las_point_set(path("y.las"), ps), CGAL::Shape_analysis::Bad_input);
+  EXPECT_FALSE(std::filesystem::exists(path("y.las")) || std::filesystem::exists(path("y.las.tmp")));
+}
+
+TEST_F(Io, LasScaledAndUndescribedExtraBytesAreRead)
+{
+  // hand_made_las()'s 6 extra bytes (0xEE each) described as a scaled int16 then 4 bytes of type 0.
+  Bytes b = hand_made_las(3, 3);
+  b.erase(b.begin() + 227, b.begin() + 227 + 54 + 20);
+  Bytes vlr;
+  put(vlr, 0, 2);
+  const std::string user = "LASF_Spec";
+  vlr.insert(vlr.end(), user.begin(), user.end());
+  vlr.insert(vlr.end(), 16 - user.size(), 0);
+  put(vlr, 4, 2);
+  put(vlr, 2 * 192, 2);
+  vlr.insert(vlr.end(), 32, 0);
+  Bytes d(2 * 192, 0);
+  d[2] = 4, d[3] = 8 | 16; // int16 with a scale and an offset
+  const std::string name = "half";
+  std::copy(name.begin(), name.end(), d.begin() + 4);
+  Bytes scale, offset;
+  put_f64(scale, 0.5), put_f64(offset, 10.0);
+  std::copy(scale.begin(), scale.end(), d.begin() + 112);
+  std::copy(offset.begin(), offset.end(), d.begin() + 136);
+  d[192 + 2] = 0, d[192 + 3] = 4; // 4 undescribed bytes
+  vlr.insert(vlr.end(), d.begin(), d.end());
+  b.insert(b.begin() + 227, vlr.begin(), vlr.end());
+  const Bytes fixed = [&] {
+    Bytes o;
+    put(o, 227 + vlr.size(), 4);
+    return o;
+  }();
+  std::copy(fixed.begin(), fixed.end(), b.begin() + 96);
+  save(path("scaled.las"), b);
+  Point_set ps;
+  const auto r = PR::read_point_set(path("scaled.las"), ps);
+  ASSERT_EQ(r.number_of_points, 3u);
+  for(Point_set::Index i : ps)
+    EXPECT_EQ(value<double>(ps, "half", i), double(std::int16_t(0xEEEE)) * 0.5 + 10.0);
+  EXPECT_EQ(r.property_names.size(), ps.properties().size());
+  // Descriptors beyond the record's extra bytes are refused.
+  b[227 + 54 + 192 + 3] = 5;
+  save(path("long.las"), b);
+  EXPECT_THROW(PR::read_point_set(path("long.las"), ps), CGAL::Shape_analysis::Bad_input);
 }
 
 TEST_F(Io, ExplicitLocalOriginIsRespected)

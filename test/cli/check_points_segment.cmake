@@ -98,6 +98,19 @@ string(JSON recall GET "${evaluation}" segmentation recall)
 string(JSON precision GET "${evaluation}" segmentation precision)
 string(JSON location_recall GET "${evaluation}" localization recall)
 message(STATUS "recognize: ${tiles} tiles, ${found} objects, localization recall ${location_recall}, segmentation precision ${precision}, recall ${recall}")
+
+# The same as LAS (extra bytes 'object', 'instance', 'ground'), read back by points evaluate: the
+# same segmentation figures as from the PLY.
+run_tool(points recognize "${WORK}/scene.ply" --tile-size 20 --tile-margin 10 --tile-origin 0,0 -q
+         --output "${WORK}/recognized.las" --locations "${WORK}/found_las.csv")
+run_tool(points evaluate --truth "${WORK}/truth.json" --locations "${WORK}/found_las.csv"
+         --objects "${WORK}/recognized.las" --report "${WORK}/evaluate_recognized_las.json")
+file(READ "${WORK}/evaluate_recognized_las.json" evaluation)
+string(JSON las_recall GET "${evaluation}" segmentation recall)
+string(JSON las_precision GET "${evaluation}" segmentation precision)
+if(NOT las_recall EQUAL recall OR NOT las_precision EQUAL precision)
+  message(FATAL_ERROR "recognized.las: precision ${las_precision}, recall ${las_recall}; from the PLY ${precision}, ${recall}")
+endif()
 if(location_recall LESS 0.8 OR recall LESS 0.7 OR precision LESS 0.7)
   message(FATAL_ERROR "points recognize: localization recall ${location_recall}, segmentation ${precision} / ${recall}")
 endif()
@@ -126,7 +139,7 @@ expect_failure("outside" points segment "${WORK}/scene.ply" --locations "${WORK}
 expect_failure("radius" points segment "${WORK}/scene.ply" --locations "${WORK}/locations.csv" --method mincut --radius 0 ${bad})
 expect_failure("method" points segment "${WORK}/scene.ply" --locations "${WORK}/locations.csv" --method kmeans ${bad})
 expect_failure("cannot open" points segment "${WORK}/scene.ply" --locations "${WORK}/nothing.csv" ${bad})
-expect_failure("PLY|ply" points segment "${WORK}/scene.ply" --locations "${WORK}/locations.csv" --output "${WORK}/bad.las")
+expect_failure("PLY or LAS" points segment "${WORK}/scene.ply" --locations "${WORK}/locations.csv" --output "${WORK}/bad.xyz")
 expect_failure("object" points evaluate --truth "${WORK}/truth.json" --objects "${WORK}/scene.ply" --report "${WORK}/bad.json")
 expect_failure("--locations, --objects" points evaluate --truth "${WORK}/truth.json" --report "${WORK}/bad.json")
 expect_failure("cannot open" points evaluate --truth "${WORK}/nothing.json" --locations "${WORK}/locations.csv")

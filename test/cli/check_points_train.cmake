@@ -84,6 +84,18 @@ foreach(p "property int label" "property int input_label" "comment label: 0 ")
   endif()
 endforeach()
 
+# The same as LAS: the labels in extra bytes, the class names in the Classification Lookup record.
+run_tool(points recognize "${WORK}/street2.ply" --model "${WORK}/model_labels1.csv.json" -q
+         --output "${WORK}/objects.las")
+file(STRINGS "${WORK}/objects.las" las_strings LIMIT_COUNT 400)
+string(JOIN "|" las_text ${las_strings})
+foreach(p "LASF_Spec" "|object" "|label" "|input_label" "|ground" "background" "Classification lookup")
+  string(FIND "${las_text}" "${p}" at)
+  if(at LESS 0)
+    message(FATAL_ERROR "objects.las lacks the string '${p}' (has: ${las_text})")
+  endif()
+endforeach()
+
 # 17 classes (with background): chance is below 0.1; measured 0.66 / 0.59.
 expect_recognition(locations.csv "the forest of street 1" 0.4)
 

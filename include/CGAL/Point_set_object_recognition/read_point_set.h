@@ -163,6 +163,35 @@ void add_property(CGAL::Point_set_3<Point>& points, const std::string& name, con
     pm[i] = values[k++];
 }
 
+// Adds the extra attribute `e` of a LAS file as a property of its name (unless the point set has
+// one): unsigned char, unsigned short, unsigned int for the unsigned 8, 16 and 32-bit integers,
+// int for the signed ones, double for the others and for scaled values.
+template <typename Point>
+void add_extra_property(CGAL::Point_set_3<Point>& points, const Las_extra_bytes& e)
+{
+  const std::vector<std::string> names = points.properties();
+  if(e.name.empty() || std::find(names.begin(), names.end(), e.name) != names.end())
+    return;
+  const auto add = [&](auto tag) {
+    typedef decltype(tag) T;
+    auto pm = points.template add_property_map<T>(e.name, T()).first;
+    std::size_t k = 0;
+    for(typename CGAL::Point_set_3<Point>::Index i : points)
+      pm[i] = static_cast<T>(e.values[k++]);
+  };
+  const unsigned t = e.scaled ? 10 : e.data_type;
+  if(t == 1)
+    add((unsigned char)0);
+  else if(t == 3)
+    add((unsigned short)0);
+  else if(t == 5)
+    add(0u);
+  else if(t == 2 || t == 4 || t == 6)
+    add(0);
+  else
+    add(0.0);
+}
+
 // Reads a PLY or XYZ file with CGAL's readers, then shifts the points to their local origin.
 template <typename Point>
 std::array<double, 3> read_with_cgal(const std::string& filename, bool ply, CGAL::Point_set_3<Point>& points,
@@ -208,11 +237,15 @@ The format is chosen by the extension of `filename`, in any case:
   `red`, `green`, `blue` as `unsigned char`, `label` as `int`).
 - `.xyz`, `.pts`, `.txt`: \cgal's XYZ reader, one point a line, `x y z` or `x y z nx ny nz`
   (a first line holding only the number of points and lines starting with `#` are skipped).
-- `.las`: uncompressed ASPRS LAS 1.0 to 1.4, point data formats 0 to 10; variable length records
-  and extra bytes of the records are skipped. Properties: `intensity` (`unsigned short`),
-  `classification`, `return_number`, `number_of_returns` (`unsigned char`), and where the format
-  has them `gps_time` (`double`; formats 1, 3-10) and `red`, `green`, `blue` (`unsigned short`;
-  formats 2, 3, 5, 7, 8, 10). Compressed LAZ files are refused.
+- `.las`: uncompressed ASPRS LAS 1.0 to 1.4, point data formats 0 to 10. Properties: `intensity`
+  (`unsigned short`), `classification`, `return_number`, `number_of_returns` (`unsigned char`),
+  and where the format has them `gps_time` (`double`; formats 1, 3-10) and `red`, `green`, `blue`
+  (`unsigned short`; formats 2, 3, 5, 7, 8, 10). The extra bytes that an Extra Bytes record
+  describes (as CloudCompare, PDAL and `shape_analysis points recognize --output .las` write
+  them) become properties of their names: `unsigned char`, `unsigned short`, `unsigned int` for
+  unsigned 8, 16 and 32-bit integers, `int` for signed ones, `double` for the others and for
+  scaled values (a name the point set already has is skipped). Other variable length records are
+  skipped. Compressed LAZ files are refused.
 - `.bin`: KITTI velodyne scans, records of float32 `x`, `y`, `z`, `reflectance`, little-endian;
   property `reflectance` (`float`).
 
@@ -305,6 +338,8 @@ Point_set_read_result read_point_set(const std::string& filename, CGAL::Point_se
       internal::add_property(points, "red", d.red);
       internal::add_property(points, "green", d.green);
       internal::add_property(points, "blue", d.blue);
+      for(const internal::Las_extra_bytes& e : d.extras)
+        internal::add_extra_property(points, e);
     } else {
       const internal::Kitti_data d = internal::read_kitti(filename);
       internal::bounding_box(d.xyz, lo, hi);

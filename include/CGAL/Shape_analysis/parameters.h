@@ -84,6 +84,7 @@ namespace internal_np {
   X(height_image_threshold_t, height_image_threshold_tag, height_image_threshold)    \
   X(local_origin_t, local_origin_tag, local_origin)                                  \
   X(shift_to_local_origin_t, shift_to_local_origin_tag, shift_to_local_origin) \
+  X(class_names_t, class_names_tag, class_names)                                     \
   X(segmentation_method_t, segmentation_method_tag, segmentation_method)             \
   X(background_radius_t, background_radius_tag, background_radius)                   \
   X(foreground_height_t, foreground_height_tag, foreground_height)                   \

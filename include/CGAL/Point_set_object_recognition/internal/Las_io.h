@@ -4,8 +4,8 @@
 #ifndef CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_LAS_IO_H
 #define CGAL_POINT_SET_OBJECT_RECOGNITION_INTERNAL_LAS_IO_H
 
-// Reading and writing of uncompressed ASPRS LAS files (versions 1.0 to 1.4, point data formats 0
-// to 10), without LASlib (Debian's CGAL is built without it).
+// Reading of uncompressed ASPRS LAS files (versions 1.0 to 1.4, point data formats 0 to 10),
+// without LASlib (Debian's CGAL is built without it); the writer is in Las_writer.h.
 //
 // A file is the public header block, variable length records (skipped: the point data starts at
 // the header's "offset to point data"), the point records, and in 1.3/1.4 optional waveform data
@@ -14,7 +14,9 @@
 // number and the number of returns in 3 bits each of byte 14 and the classification in the low 5
 // bits of byte 15; formats 6-10 use 4 bits each in byte 14 and a whole byte 16 for the
 // classification. GPS time (double) and RGB (3 x uint16) follow where the format has them.
-// Records may be longer than their format (extra bytes), which are skipped.
+// Records may be longer than their format: the "extra bytes" that an Extra Bytes VLR (user id
+// "LASF_Spec", record id 4; 192-byte descriptors: data type, options, name, ..., scale, offset)
+// describes are read as attributes; undescribed ones are skipped.
 
 #include <CGAL/Point_set_object_recognition/internal/Binary_io.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
@@ -70,6 +72,43 @@ struct Las_header
   std::array<double, 3> scale{{1, 1, 1}}, offset{{0, 0, 0}}, min{{0, 0, 0}}, max{{0, 0, 0}};
 };
 
+// An attribute stored in the extra bytes of the records: its name, data type (1 to 10: unsigned
+// and signed 8, 16, 32, 64-bit integers, then float and double), byte offset in the record,
+// scale and offset (value = stored * scale + offset when `scaled`), and its values.
+struct Las_extra_bytes
+{
+  std::string name;
+  unsigned data_type = 0;
+  std::size_t offset = 0;
+  double scale = 1, add = 0;
+  bool scaled = false;
+  std::vector<double> values;
+};
+
+// The size of an extra-bytes data type (1 to 10), 0 for the others.
+inline std::size_t las_extra_size(unsigned data_type)
+{
+  static const std::size_t sizes[11] = {0, 1, 1, 2, 2, 4, 4, 8, 8, 4, 8};
+  return data_type <= 10 ? sizes[data_type] : 0;
+}
+
+// The value of type `data_type` (1 to 10) at p.
+inline double las_extra_value(const unsigned char* p, unsigned data_type)
+{
+  switch(data_type) {
+  case 1: return p[0];
+  case 2: return static_cast<signed char>(p[0]);
+  case 3: return le_u16(p);
+  case 4: return static_cast<std::int16_t>(le_u16(p));
+  case 5: return le_u32(p);
+  case 6: return le_i32(p);
+  case 7: return static_cast<double>(le_u64(p));
+  case 8: return static_cast<double>(static_cast<std::int64_t>(le_u64(p)));
+  case 9: return le_f32(p);
+  default: return le_f64(p);
+  }
+}
+
 // The content of a LAS file: coordinates (x, y, z of each point, in file units, computed in
 // double) and per-point attributes; `gps_time` and the colours are empty when the format has none.
 struct Las_data
@@ -80,6 +119,7 @@ struct Las_data
   std::vector<unsigned char> classification, return_number, number_of_returns;
   std::vector<double> gps_time;
   std::vector<std::uint16_t> red, green, blue;
+  std::vector<Las_extra_bytes> extras; // the described extra bytes, in record order
 };
 
 // The error about the LAS file `filename`.
@@ -189,6 +229,8 @@ inline void read_las_records(std::ifstream& in, Las_data& data, const std::strin
     data.green.resize(count);
     data.blue.resize(count);
   }
+  for(Las_extra_bytes& e : data.extras)
+    e.values.resize(count);
 
   in.seekg(static_cast<std::streamoff>(hd.offset_to_point_data));
   const std::size_t chunk = 1 << 16;
@@ -219,8 +261,63 @@ inline void read_las_records(std::ifstream& in, Las_data& data, const std::strin
         data.green[i] = le_u16(p + layout.rgb + 2);
         data.blue[i] = le_u16(p + layout.rgb + 4);
       }
+      for(Las_extra_bytes& e : data.extras) {
+        const double v = las_extra_value(p + e.offset, e.data_type);
+        e.values[i] = e.scaled ? v * e.scale + e.add : v;
+      }
     }
     first += m;
+  }
+}
+
+// The text of a fixed-size field of n bytes (up to its first 0).
+inline std::string fixed_text(const unsigned char* p, std::size_t n)
+{
+  return std::string(reinterpret_cast<const char*>(p), reinterpret_cast<const char*>(std::find(p, p + n, 0)));
+}
+
+// The extra bytes that the Extra Bytes VLR of the file (`in`, of `size` bytes) describes, in
+// `data.extras`; the other VLRs are skipped.
+inline void read_las_extra_bytes(std::ifstream& in, Las_data& data, const std::string& filename)
+{
+  const Las_header& hd = data.header;
+  std::uint64_t at = hd.header_size;
+  for(std::uint32_t v = 0; v < hd.number_of_vlrs; ++v) {
+    unsigned char h[54];
+    in.seekg(static_cast<std::streamoff>(at));
+    if(at + 54 > hd.offset_to_point_data || !in.read(reinterpret_cast<char*>(h), 54))
+      throw las_error(filename, "variable length record " + std::to_string(v) + " runs into the point data");
+    const std::uint64_t length = le_u16(h + 20);
+    if(at + 54 + length > hd.offset_to_point_data)
+      throw las_error(filename, "variable length record " + std::to_string(v) + " runs into the point data");
+    const std::string user = fixed_text(h + 2, 16);
+    if(user == "LASF_Spec" && le_u16(h + 18) == 4) {
+      std::vector<unsigned char> d(static_cast<std::size_t>(length));
+      if(!in.read(reinterpret_cast<char*>(d.data()), static_cast<std::streamsize>(length)))
+        throw las_error(filename, "cannot read the extra bytes record");
+      std::size_t offset = las_layout(hd.point_format).size;
+      for(std::size_t k = 0; k + 192 <= d.size(); k += 192) {
+        const unsigned char* e = d.data() + k;
+        const unsigned type = e[2], options = e[3];
+        const std::size_t size = type == 0 ? options : las_extra_size(type);
+        if(size == 0)
+          throw las_error(filename, "extra bytes of data type " + std::to_string(type) + " (1 to 10 are read)");
+        if(offset + size > hd.record_length)
+          throw las_error(filename, "the extra bytes described run past the point record length " +
+                                        std::to_string(hd.record_length));
+        if(type != 0) {
+          Las_extra_bytes x;
+          x.name = fixed_text(e + 4, 32);
+          x.data_type = type, x.offset = offset;
+          x.scaled = (options & 24) != 0;
+          x.scale = (options & 8) ? le_f64(e + 112) : 1.0;
+          x.add = (options & 16) ? le_f64(e + 136) : 0.0;
+          data.extras.push_back(std::move(x));
+        }
+        offset += size;
+      }
+    }
+    at += 54 + length;
   }
 }
 
@@ -249,206 +346,9 @@ inline Las_data read_las(const std::string& filename)
   data.header = las_header_fields(h, format_byte, legacy_count);
   check_las_header(data.header, format_byte, size, filename);
   set_las_point_count(data.header, h, legacy_count, size, filename);
+  read_las_extra_bytes(in, data, filename);
   read_las_records(in, data, filename);
   return data;
-}
-
-// The attributes that write_las() stores, from the properties of the point set (`second`:
-// whether it has them).
-template <typename Point_set>
-struct Las_attributes
-{
-  template <typename T> using Map = std::pair<typename Point_set::template Property_map<T>, bool>;
-
-  explicit Las_attributes(const Point_set& points)
-    : intensity(points.template property_map<unsigned short>("intensity")),
-      classification(points.template property_map<unsigned char>("classification")),
-      return_number(points.template property_map<unsigned char>("return_number")),
-      number_of_returns(points.template property_map<unsigned char>("number_of_returns")),
-      gps_time(points.template property_map<double>("gps_time")),
-      red(points.template property_map<unsigned short>("red")),
-      green(points.template property_map<unsigned short>("green")),
-      blue(points.template property_map<unsigned short>("blue"))
-  {}
-
-  Map<unsigned short> intensity;
-  Map<unsigned char> classification, return_number, number_of_returns;
-  Map<double> gps_time;
-  Map<unsigned short> red, green, blue;
-};
-
-// The integer coordinates of the points (x, y, z of each), their bounding box as stored and
-// their counts by return (write_las()).
-template <typename Point>
-void las_integer_coordinates(const CGAL::Point_set_3<Point>& points, const Las_attributes<CGAL::Point_set_3<Point>>& a,
-                             const std::array<double, 3>& scale, const std::array<double, 3>& offset,
-                             const std::array<double, 3>& origin, unsigned point_format, const std::string& who,
-                             std::vector<std::int32_t>& q, std::array<double, 3>& lo, std::array<double, 3>& hi,
-                             std::uint64_t (&by_return)[15])
-{
-  typedef CGAL::Shape_analysis::Bad_input Bad_input;
-  const bool extended = las_layout(point_format).extended;
-  const unsigned max_return = extended ? 15 : 7;
-  q.assign(3 * points.size(), 0);
-  std::size_t k = 0;
-  for(typename CGAL::Point_set_3<Point>::Index i : points) {
-    const Point& p = points.point(i);
-    const double w[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-    for(int c = 0; c < 3; ++c) {
-      const double v = std::round((w[c] + origin[c] - offset[c]) / scale[c]);
-      if(!(v >= std::numeric_limits<std::int32_t>::min() && v <= std::numeric_limits<std::int32_t>::max()))
-        throw Bad_input(who + "point " + std::to_string(k) +
-                        " does not fit in 32-bit integers with this scale and offset");
-      q[3 * k + c] = static_cast<std::int32_t>(v);
-      const double stored = q[3 * k + c] * scale[c] + offset[c];
-      lo[c] = k == 0 ? stored : std::min(lo[c], stored);
-      hi[c] = k == 0 ? stored : std::max(hi[c], stored);
-    }
-    const unsigned r = a.return_number.second ? a.return_number.first[i] : 1;
-    const unsigned nr = a.number_of_returns.second ? a.number_of_returns.first[i] : 1;
-    if(r > max_return || nr > max_return)
-      throw Bad_input(who + "a return number above " + std::to_string(max_return) + " does not fit format " +
-                      std::to_string(point_format));
-    if(!extended && a.classification.second && a.classification.first[i] > 31)
-      throw Bad_input(who + "a classification above 31 does not fit format " + std::to_string(point_format) +
-                      " (use format 6)");
-    if(r >= 1)
-      ++by_return[r - 1];
-    ++k;
-  }
-}
-
-// The public header block of a LAS file of n points (write_las()), without VLRs.
-inline void las_header_block(Le_buffer& b, unsigned point_format, std::size_t n, const std::uint64_t (&by_return)[15],
-                             const std::array<double, 3>& scale, const std::array<double, 3>& offset,
-                             const std::array<double, 3>& lo, const std::array<double, 3>& hi)
-{
-  const Las_format_layout& layout = las_layout(point_format);
-  const bool extended = layout.extended;
-  const unsigned header_size = extended ? 375 : 227;
-  b.text("LASF", 4);
-  b.u16(0);                    // file source id
-  b.u16(extended ? 0x10 : 0);  // global encoding (WKT bit, required with formats 6-10)
-  b.zeros(16);                 // project GUID
-  b.u8(1);
-  b.u8(extended ? 4 : 2);
-  b.text("CGAL Global Shape Analysis", 32);
-  b.text("Point_set_object_recognition", 32);
-  b.u16(0);  // creation day (left 0: the output depends on the points only)
-  b.u16(0);  // creation year
-  b.u16(header_size);
-  b.u32(header_size);  // offset to point data: no VLRs
-  b.u32(0);
-  b.u8(point_format);
-  b.u16(static_cast<unsigned>(layout.size));
-  b.u32(extended ? 0 : static_cast<std::uint32_t>(n));
-  for(int r = 0; r < 5; ++r)
-    b.u32(extended ? 0 : static_cast<std::uint32_t>(by_return[r]));
-  for(int c = 0; c < 3; ++c)
-    b.f64(scale[c]);
-  for(int c = 0; c < 3; ++c)
-    b.f64(offset[c]);
-  for(int c = 0; c < 3; ++c) {
-    b.f64(hi[c]);
-    b.f64(lo[c]);
-  }
-  if(extended) {
-    b.u64(0);  // start of waveform data
-    b.u64(0);  // start of the first extended VLR
-    b.u32(0);  // number of extended VLRs
-    b.u64(n);
-    for(int r = 0; r < 15; ++r)
-      b.u64(by_return[r]);
-  }
-}
-
-// The point record of point i (integer coordinates `q`) in point data format `point_format`.
-template <typename Point_set>
-void append_las_record(Le_buffer& b, const Las_attributes<Point_set>& a, typename Point_set::Index i,
-                       const std::int32_t* q, unsigned point_format)
-{
-  const Las_format_layout& layout = las_layout(point_format);
-  for(int c = 0; c < 3; ++c)
-    b.i32(q[c]);
-  b.u16(a.intensity.second ? a.intensity.first[i] : 0);
-  const unsigned r = a.return_number.second ? a.return_number.first[i] : 1;
-  const unsigned nr = a.number_of_returns.second ? a.number_of_returns.first[i] : 1;
-  const unsigned cls = a.classification.second ? a.classification.first[i] : 0;
-  if(layout.extended) {
-    b.u8(r | (nr << 4));
-    b.u8(0);  // classification flags, scanner channel, scan direction, edge of flight line
-    b.u8(cls);
-    b.u8(0);   // user data
-    b.u16(0);  // scan angle
-    b.u16(0);  // point source id
-  } else {
-    b.u8(r | (nr << 3));
-    b.u8(cls);
-    b.u8(0);   // scan angle rank
-    b.u8(0);   // user data
-    b.u16(0);  // point source id
-  }
-  if(layout.gps_time >= 0)
-    b.f64(a.gps_time.second ? a.gps_time.first[i] : 0.);
-  if(layout.rgb >= 0) {
-    b.u16(a.red.second ? a.red.first[i] : 0);
-    b.u16(a.green.second ? a.green.first[i] : 0);
-    b.u16(a.blue.second ? a.blue.first[i] : 0);
-  }
-  if(point_format == 8)
-    b.u16(0);  // near infrared
-}
-
-// Writes `points` as an uncompressed LAS file: point data formats 0-3 as LAS 1.2, 6-8 as LAS 1.4
-// (with the 64-bit point count, legacy counts 0). A point p is stored as the integers
-// round((p + origin - offset) / scale): `origin` is the local origin that `read_point_set()`
-// subtracted, added back here. Attributes come from the properties "intensity" (unsigned short),
-// "classification", "return_number", "number_of_returns" (unsigned char), "gps_time" (double),
-// "red", "green", "blue" (unsigned short) when the point set has them with these types; otherwise
-// 0 (1 for the return number and number of returns). Written to a temporary file then renamed.
-// Throws Bad_input for an unsupported format, a scale that is not positive, a coordinate that
-// does not fit in 32 bits with this scale and offset, or an attribute too large for the format.
-template <typename Point>
-void write_las(const std::string& filename, const CGAL::Point_set_3<Point>& points,
-               const std::array<double, 3>& scale, const std::array<double, 3>& offset,
-               unsigned point_format = 3, const std::array<double, 3>& origin = {{0, 0, 0}})
-{
-  typedef CGAL::Shape_analysis::Bad_input Bad_input;
-  typedef CGAL::Point_set_3<Point> Point_set;
-  const std::string who = filename + ": write_las: ";
-  if(!(point_format <= 3 || (point_format >= 6 && point_format <= 8)))
-    throw Bad_input(who + "point data format " + std::to_string(point_format) +
-                    " is not written (0-3 and 6-8 are)");
-  for(int c = 0; c < 3; ++c)
-    if(!(scale[c] > 0) || !std::isfinite(scale[c]) || !std::isfinite(offset[c]) || !std::isfinite(origin[c]))
-      throw Bad_input(who + "the scale must be positive, the scale, offset and origin finite");
-  const std::size_t n = points.size();
-  if(!las_layout(point_format).extended && n > std::numeric_limits<std::uint32_t>::max())
-    throw Bad_input(who + "too many points for LAS 1.2 (use point format 6)");
-  const Las_attributes<Point_set> attributes(points);
-
-  // Integer coordinates, bounding box and counts by return, then the header, then the records.
-  std::vector<std::int32_t> q;
-  std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
-  std::uint64_t by_return[15] = {0};
-  las_integer_coordinates(points, attributes, scale, offset, origin, point_format, who, q, lo, hi, by_return);
-  Le_buffer b;
-  las_header_block(b, point_format, n, by_return, scale, offset, lo, hi);
-
-  Atomic_output_file out(filename);
-  out.write(b.bytes);
-  b.bytes.clear();
-  std::size_t k = 0;
-  for(typename Point_set::Index i : points) {
-    append_las_record(b, attributes, i, q.data() + 3 * k, point_format);
-    if(b.bytes.size() >= (1 << 20)) {
-      out.write(b.bytes);
-      b.bytes.clear();
-    }
-    ++k;
-  }
-  out.write(b.bytes);
-  out.commit();
 }
 
 } // namespace internal

@@ -1,0 +1,189 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_POINT_SET_OBJECT_RECOGNITION_WRITE_POINT_SET_H
+#define CGAL_POINT_SET_OBJECT_RECOGNITION_WRITE_POINT_SET_H
+
+/// \file write_point_set.h
+/// Writing of point sets with their properties as LAS (the counterpart of `read_point_set()`'s
+/// LAS reader, without LASlib).
+
+#include <CGAL/Point_set_object_recognition/internal/Las_writer.h>
+#include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/parameters.h>
+
+#include <CGAL/Point_set_3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Point_set_object_recognition {
+
+/// The named parameters of this package (this project's, and CGAL's usable in the same chain).
+namespace parameters = CGAL::Shape_analysis::parameters;
+using CGAL::Shape_analysis::Bad_input;
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+The options of `write_las_point_set()`: each member is the named parameter of the same name,
+initialized to its default.
+*/
+struct Write_las_point_set_options
+{
+  /// the local origin added back to every point (finite): the `Point_set_read_result::offset` of
+  /// `read_point_set()`, so that the file has the coordinates read
+  std::array<double, 3> local_origin{{0, 0, 0}};
+  /// the names of classification codes, (code 0 to 255, name) pairs, written in the file's
+  /// Classification Lookup record (a name keeps its first 15 characters)
+  std::vector<std::pair<unsigned, std::string>> class_names;
+};
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+The options that `write_las_point_set()` reads from the named parameters `np`, the defaults of
+`Write_las_point_set_options` for the others (not checked here).
+\tparam NamedParameters a sequence of named parameters
+\param np the named parameters of `write_las_point_set()`
+\returns the options
+*/
+template <typename NamedParameters = parameters::Default_named_parameters>
+Write_las_point_set_options write_las_point_set_options(const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::Shape_analysis::internal::parameter_value;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  Write_las_point_set_options o;
+  o.local_origin = parameter_value(np, snp::local_origin_tag, o.local_origin);
+  o.class_names = parameter_value(np, snp::class_names_tag, o.class_names);
+  return o;
+}
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The options of `np`, checked; the file's offsets: per axis the smallest coordinate written
+// (local origin added) rounded down to a multiple of 100 m.
+template <typename Point, typename NamedParameters>
+Write_las_point_set_options checked_las_options(const CGAL::Point_set_3<Point>& points, const NamedParameters& np,
+                                                std::array<double, 3>& offset)
+{
+  const Write_las_point_set_options o = write_las_point_set_options(np);
+  for(double c : o.local_origin)
+    if(!std::isfinite(c))
+      throw Bad_input("write_las_point_set: the local origin must be finite");
+  for(const auto& name : o.class_names)
+    if(name.first > 255)
+      throw Bad_input("write_las_point_set: class code " + std::to_string(name.first) + " is above 255");
+  offset = {{0, 0, 0}};
+  bool first = true;
+  for(typename CGAL::Point_set_3<Point>::Index i : points) {
+    const Point& p = points.point(i);
+    const double xyz[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    for(int c = 0; c < 3; ++c) {
+      if(!std::isfinite(xyz[c]))
+        throw Bad_input("write_las_point_set: a coordinate is not finite");
+      offset[c] = first ? xyz[c] : (std::min)(offset[c], xyz[c]);
+    }
+    first = false;
+  }
+  for(int c = 0; c < 3; ++c)
+    offset[c] = std::floor((offset[c] + o.local_origin[c]) / 100) * 100;
+  return o;
+}
+
+// Point format 7 when the point set has 16-bit colours, else 6.
+template <typename Point>
+unsigned las_point_format(const CGAL::Point_set_3<Point>& points)
+{
+  return points.template has_property_map<unsigned short>("red") ? 7 : 6;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+
+Writes `points` to `os` (binary) as an uncompressed ASPRS LAS 1.4 file, point data format 7
+when the point set has `red`, `green` and `blue` properties of type `unsigned short`, else 6.
+Coordinates are stored in millimetres from an offset on a 100 m grid (per axis the smallest
+coordinate, rounded down), after `local_origin` is added back. The properties `intensity`
+(`unsigned short`), `classification`, `return_number`, `number_of_returns` (`unsigned char`),
+`gps_time` (`double`) and the colours fill the fields of the format (0, or 1 for the return
+number and the number of returns, when absent: what `read_point_set()` creates from a LAS file);
+every other property of an arithmetic type (`unsigned char`, `signed char`, `char`,
+`unsigned short`, `short`, `unsigned int`, `int`, `float`, `double`) is written after them as
+"extra bytes" under its name (its first 32 characters), described by an Extra Bytes record as
+LAS 1.4 specifies: CloudCompare and PDAL show them as scalar fields, and `read_point_set()`
+reads them back as properties. Properties of other types (normals among them) are not written.
+
+\tparam Point the point type of the point set
+\tparam NamedParameters a sequence of named parameters
+\param os the output stream, opened in binary mode
+\param points the points and their properties
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{local_origin}
+    \cgalParamDescription{the local origin added back to the points, as `std::array<double, 3>`}
+    \cgalParamType{`std::array<double, 3>`}
+    \cgalParamDefault{`{0, 0, 0}`}
+  \cgalParamNEnd
+  \cgalParamNBegin{class_names}
+    \cgalParamDescription{names of classification codes written in the Classification Lookup
+                          record, as (code, name) pairs}
+    \cgalParamType{`std::vector<std::pair<unsigned, std::string>>`}
+    \cgalParamDefault{none (no record)}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws CGAL::Shape_analysis::Bad_input if a coordinate or the local origin is not finite, a
+        point is more than 2,147 km from the offset, a class code is above 255, a return number
+        is above 15, more than 341 properties are to be written as extra bytes, or the stream
+        fails; nothing is written to `os` before the checks pass
+*/
+template <typename Point, typename NamedParameters = parameters::Default_named_parameters>
+void write_las_point_set(std::ostream& os, const CGAL::Point_set_3<Point>& points,
+                         const NamedParameters& np = parameters::default_values())
+{
+  std::array<double, 3> offset;
+  const Write_las_point_set_options o = internal::checked_las_options(points, np, offset);
+  internal::write_las(os, points, {{0.001, 0.001, 0.001}}, offset, internal::las_point_format(points), o.local_origin,
+                      o.class_names);
+  if(!os)
+    throw Bad_input("write_las_point_set: cannot write the stream");
+}
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+
+Writes `points` to the file `filename` as `write_las_point_set()` does to a stream. The file is
+written under a temporary name and renamed when complete: on failure no file is left.
+
+\tparam Point the point type of the point set
+\tparam NamedParameters a sequence of named parameters
+\param filename the name of the LAS file
+\param points the points and their properties
+\param np the named parameters of `write_las_point_set()` (`local_origin`, `class_names`)
+
+\throws CGAL::Shape_analysis::Bad_input as `write_las_point_set()`, or if the file cannot be written
+*/
+template <typename Point, typename NamedParameters = parameters::Default_named_parameters>
+void write_las_point_set(const std::string& filename, const CGAL::Point_set_3<Point>& points,
+                         const NamedParameters& np = parameters::default_values())
+{
+  std::array<double, 3> offset;
+  const Write_las_point_set_options o = internal::checked_las_options(points, np, offset);
+  internal::write_las(filename, points, {{0.001, 0.001, 0.001}}, offset, internal::las_point_format(points),
+                      o.local_origin, o.class_names);
+}
+
+} // namespace Point_set_object_recognition
+} // namespace CGAL
+
+#endif // CGAL_POINT_SET_OBJECT_RECOGNITION_WRITE_POINT_SET_H

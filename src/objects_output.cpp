@@ -1,0 +1,181 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The segmented points of 'points segment' and 'points recognize': the input's points with their
+// objects, ground and classes, as PLY or as LAS.
+
+#include "points_common.h"
+
+#include <CGAL/Point_set_3.h>
+#include <CGAL/Point_set_3/IO/PLY.h>
+#include <CGAL/Point_set_object_recognition/write_point_set.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace shape_analysis_cli {
+
+namespace {
+
+namespace PSOR = CGAL::Point_set_object_recognition;
+typedef CGAL::Point_set_3<Point_3> Point_set;
+
+// Renames the integer property `from` of `ps`, if any, to `to` (as int); throws Cli_error when
+// `from` is a property of another type or `to` exists.
+void move_property_to(CGAL::Point_set_3<Point_3>& ps, const std::string& from, const std::string& to)
+{
+  const std::vector<std::string> names = ps.properties();
+  if(std::find(names.begin(), names.end(), from) == names.end())
+    return;
+  std::vector<int> values;
+  const auto take = [&](auto tag) {
+    typedef decltype(tag) T;
+    if(values.empty() && ps.template has_property_map<T>(from)) {
+      auto map = ps.template property_map<T>(from).first;
+      for(auto i : ps)
+        values.push_back(int(map[i]));
+      ps.remove_property_map(map);
+    }
+  };
+  take(int()), take((unsigned char)0), take((unsigned int)0), take(short()), take((unsigned short)0), take((signed char)0);
+  if(values.size() != ps.size())
+    throw Cli_error("the input's '" + from + "' property is not an integer property");
+  auto added = ps.template add_property_map<int>(to, -1);
+  if(!added.second)
+    throw Cli_error("the input has both '" + from + "' and '" + to + "' properties");
+  std::size_t k = 0;
+  for(auto i : ps)
+    added.first[i] = values[k++];
+}
+
+// The LAS classification codes of the classes: 64 (the first code the specification leaves to
+// users) and up.
+constexpr int first_class_code = 64;
+
+// The input's points with 'object', 'ground', 'label' (when `label` is not empty; an input's own
+// integer 'label' becomes 'input_label') and, unless the input has colours, colours by class or by
+// object (grey for none): `colour_bytes` 1 for 8-bit colours (PLY), 2 for 16-bit ones (LAS).
+Point_set objects_point_set(const std::string& input, const Point_set& points, const std::vector<int>& object,
+                            const std::vector<char>& ground, const std::vector<int>& label, int colour_bytes)
+{
+  Point_set result = points;
+  auto object_map = result.add_property_map<int>("object", -1);
+  auto ground_map = result.add_property_map<unsigned char>("ground", 0);
+  if(!object_map.second || !ground_map.second)
+    throw Cli_error(input + " already has an 'object' or a 'ground' property");
+  Point_set::Property_map<int> label_map;
+  if(!label.empty()) {
+    move_property_to(result, "label", "input_label"); // e.g. the true classes of a generated scan
+    auto added = result.add_property_map<int>("label", -1);
+    if(!added.second)
+      throw Cli_error(input + " already has a 'label' property");
+    label_map = added.first;
+  }
+  const auto has_colour = [&](auto tag) {
+    typedef decltype(tag) T;
+    return result.has_property_map<T>("red") || result.has_property_map<T>("green") || result.has_property_map<T>("blue");
+  };
+  const bool coloured = !has_colour((unsigned char)0) && !has_colour((unsigned short)0);
+  const unsigned scale = colour_bytes == 2 ? 257 : 1;
+  std::array<Point_set::Property_map<unsigned char>, 3> rgb8;
+  std::array<Point_set::Property_map<unsigned short>, 3> rgb16;
+  const char* channel[3] = {"red", "green", "blue"};
+  for(int c = 0; c < 3 && coloured; ++c)
+    if(colour_bytes == 2)
+      rgb16[c] = result.add_property_map<unsigned short>(channel[c], 0).first;
+    else
+      rgb8[c] = result.add_property_map<unsigned char>(channel[c], 0).first;
+  std::size_t k = 0;
+  for(auto i : result) {
+    object_map.first[i] = object[k];
+    ground_map.first[i] = ground[k] ? 1 : 0;
+    if(!label.empty())
+      label_map[i] = label[k];
+    if(coloured) {
+      const int by = label.empty() ? object[k] : label[k]; // colours by class when there are classes
+      const auto rgb = by < 0 ? std::array<unsigned char, 3>{{160, 160, 160}} : label_colour(std::size_t(by) + 1);
+      for(int c = 0; c < 3; ++c)
+        if(colour_bytes == 2)
+          rgb16[c][i] = static_cast<unsigned short>(rgb[c] * scale);
+        else
+          rgb8[c][i] = rgb[c];
+    }
+    ++k;
+  }
+  return result;
+}
+
+// Writes `result` (objects_point_set()) as LAS 1.4 (write_las_point_set()):
+// the classification 2 for the ground, 64 + the class for the points of a classified object (with
+// `class_names` in the Classification Lookup record), 1 for the others; an input classification
+// kept as 'input_classification'; 8-bit colours widened to 16 bits.
+void write_objects_las(std::ostream& out, Point_set& result, const std::vector<std::string>& class_names)
+{
+  move_property_to(result, "classification", "input_classification");
+  for(const char* c : {"red", "green", "blue"})
+    if(result.has_property_map<unsigned char>(c)) {
+      auto narrow = result.property_map<unsigned char>(c).first;
+      std::vector<unsigned short> values;
+      for(auto i : result)
+        values.push_back(static_cast<unsigned short>(narrow[i] * 257));
+      result.remove_property_map(narrow);
+      auto wide = result.add_property_map<unsigned short>(c, 0).first;
+      std::size_t k = 0;
+      for(auto i : result)
+        wide[i] = values[k++];
+    }
+  const bool named = !class_names.empty() && first_class_code + class_names.size() <= 256;
+  auto classification = result.add_property_map<unsigned char>("classification", 1).first;
+  const auto ground = result.property_map<unsigned char>("ground").first;
+  const auto label = result.property_map<int>("label");
+  for(auto i : result) {
+    if(ground[i])
+      classification[i] = 2;
+    else if(named && label.second && label.first[i] >= 0)
+      classification[i] = static_cast<unsigned char>(first_class_code + label.first[i]);
+  }
+  std::vector<std::pair<unsigned, std::string>> names;
+  for(std::size_t c = 0; named && c < class_names.size(); ++c)
+    names.emplace_back(unsigned(first_class_code + c), class_names[c]);
+  try {
+    PSOR::write_las_point_set(out, result, PSOR::parameters::class_names(names));
+  } catch(const CGAL::Shape_analysis::Bad_input& e) {
+    throw Cli_error(e.what());
+  }
+}
+
+} // namespace
+
+void require_objects_extension(const std::string& path)
+{
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if(ext != ".ply" && ext != ".las")
+    throw Usage_error("the segmented points are written as PLY or LAS: name them '.ply' or '.las' (got '" + path +
+                      "')");
+}
+
+void stage_objects_file(Output_files& outputs, const std::string& path, const std::string& input,
+                        const Point_set& points, const std::vector<int>& object, const std::vector<char>& ground,
+                        const std::string& command, const std::vector<int>& label, const std::string& comment,
+                        const std::vector<std::string>& class_names)
+{
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const bool las = ext == ".las";
+  outputs.stage(path, true, [&](std::ostream& out) {
+    Point_set result = objects_point_set(input, points, object, ground, label, las ? 2 : 1);
+    if(las)
+      return write_objects_las(out, result, class_names);
+    CGAL::IO::set_mode(out, CGAL::IO::BINARY);
+    if(!CGAL::IO::write_PLY(out, result, "written by shape_analysis " + command + " (CGAL Global Shape Analysis)" +
+                                            (comment.empty() ? std::string() : "\n" + comment)))
+      throw Cli_error("cannot write " + path);
+  });
+}
+
+} // namespace shape_analysis_cli
