@@ -68,6 +68,9 @@ namespace internal_np {
   X(transfer_mode_t, transfer_mode_tag, transfer_mode)                               \
   X(source_side_t, source_side_tag, source_side)                                     \
   X(symmetric_map_t, symmetric_map_tag, symmetric_map)                               \
+  X(number_of_faces_t, number_of_faces_tag, number_of_faces)                         \
+  X(maximum_error_t, maximum_error_tag, maximum_error)                               \
+  X(pairing_tolerance_t, pairing_tolerance_tag, pairing_tolerance)                   \
   X(ground_cell_size_t, ground_cell_size_tag, ground_cell_size)                      \
   X(ground_threshold_t, ground_threshold_tag, ground_threshold)                      \
   X(isolation_radius_t, isolation_radius_tag, isolation_radius)                      \
