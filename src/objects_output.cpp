@@ -150,10 +150,17 @@ void write_objects_las(std::ostream& out, Point_set& result, const std::vector<s
 
 } // namespace
 
-void require_objects_extension(const std::string& path)
+// The extension of `path`, lower case.
+std::string lower_extension(const std::string& path)
 {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+void require_objects_extension(const std::string& path)
+{
+  const std::string ext = lower_extension(path);
   if(ext != ".ply" && ext != ".las")
     throw Usage_error("the segmented points are written as PLY or LAS: name them '.ply' or '.las' (got '" + path +
                       "')");
@@ -164,9 +171,7 @@ void stage_objects_file(Output_files& outputs, const std::string& path, const st
                         const std::string& command, const std::vector<int>& label, const std::string& comment,
                         const std::vector<std::string>& class_names)
 {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  const bool las = ext == ".las";
+  const bool las = lower_extension(path) == ".las";
   outputs.stage(path, true, [&](std::ostream& out) {
     Point_set result = objects_point_set(input, points, object, ground, label, las ? 2 : 1);
     if(las)

@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -101,6 +102,7 @@ template <typename TriangleMesh>
 struct Mirrored_mesh
 {
   Mesh_arrays<TriangleMesh> arrays;
+  Plane_frame frame;
   Surface frame_surface;
   std::vector<std::uint32_t> partner;
 };
@@ -114,8 +116,9 @@ Mirrored_mesh<TriangleMesh> mirrored_mesh(const TriangleMesh& tm, const Symmetry
     throw Bad_input(who + ": the symmetry is not a reflection (only reflective symmetries are supported)");
   if(!(o.pairing_tolerance > 0) || !std::isfinite(o.pairing_tolerance))
     throw Bad_input(who + ": pairing_tolerance must be positive and finite");
-  Mirrored_mesh<TriangleMesh> m{read_mesh_np(tm, np, who), Surface(), {}};
-  const Plane_frame frame(plane_of(symmetry, who), m.arrays.surface.area_centroid());
+  Mesh_arrays<TriangleMesh> arrays = read_mesh_np(tm, np, who);
+  const Plane_frame frame(plane_of(symmetry, who), arrays.surface.area_centroid());
+  Mirrored_mesh<TriangleMesh> m{std::move(arrays), frame, Surface(), {}};
   m.frame_surface.triangles = m.arrays.surface.triangles;
   std::vector<char> used(m.arrays.surface.points.size(), 0);
   bool left = false, right = false;
@@ -280,7 +283,6 @@ Symmetric_decimation_result symmetric_decimation(TriangleMesh& tm, const Symmetr
   r.after = internal::public_connectivity(out, partner);
 
   // The mesh rebuilt, in the input's frame.
-  const internal::Plane_frame frame(internal::plane_of(symmetry, who), m.arrays.surface.area_centroid());
   auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                 get_property_map(CGAL::vertex_point, tm));
   typedef typename boost::property_traits<decltype(vpm)>::value_type Point;
@@ -288,7 +290,7 @@ Symmetric_decimation_result symmetric_decimation(TriangleMesh& tm, const Symmetr
   CGAL::clear(tm);
   std::vector<vertex_descriptor> v;
   for(const internal::Vector_3d& q : out.points) {
-    const internal::Vector_3d p = frame.from_frame(q);
+    const internal::Vector_3d p = m.frame.from_frame(q);
     v.push_back(add_vertex(tm));
     put(vpm, v.back(), Point(p.x, p.y, p.z));
   }
