@@ -71,6 +71,8 @@ namespace internal_np {
   X(number_of_faces_t, number_of_faces_tag, number_of_faces)                         \
   X(maximum_error_t, maximum_error_tag, maximum_error)                               \
   X(pairing_tolerance_t, pairing_tolerance_tag, pairing_tolerance)                   \
+  X(restore_residuals_t, restore_residuals_tag, restore_residuals)                   \
+  X(copy_one_side_t, copy_one_side_tag, copy_one_side)                               \
   X(ground_cell_size_t, ground_cell_size_tag, ground_cell_size)                      \
   X(ground_threshold_t, ground_threshold_tag, ground_threshold)                      \
   X(isolation_radius_t, isolation_radius_tag, isolation_radius)                      \

@@ -133,6 +133,7 @@ Mirrored_mesh<TriangleMesh> mirrored_mesh(const TriangleMesh& tm, const Symmetry
   if(!left || !right)
     throw Bad_input(who + ": the plane does not cross the mesh (all of it lies on one side)");
   m.partner = pair_vertices(m.frame_surface.points, used, o.pairing_tolerance * mean_edge_length(m.frame_surface));
+  unpair_faces_in_plane(m.frame_surface, m.partner);
   return m;
 }
 
@@ -148,6 +149,34 @@ inline Symmetric_connectivity public_connectivity(const Surface& s, const std::v
   for(std::uint32_t p : partner)
     r.mirror_vertex.push_back(p == no_partner ? Symmetric_connectivity::no_vertex : std::size_t(p));
   return r;
+}
+
+
+// Replaces the vertices and faces of tm by those of `s`.
+template <typename TriangleMesh, typename NamedParameters>
+void rebuild_mesh(TriangleMesh& tm, const Surface& s, const NamedParameters& np)
+{
+  auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                get_property_map(CGAL::vertex_point, tm));
+  typedef typename boost::property_traits<decltype(vpm)>::value_type Point;
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  CGAL::clear(tm);
+  std::vector<vertex_descriptor> v;
+  for(const Vector_3d& p : s.points) {
+    v.push_back(add_vertex(tm));
+    put(vpm, v.back(), Point(p.x, p.y, p.z));
+  }
+  for(const auto& t : s.triangles)
+    CGAL::Euler::add_face(std::vector<vertex_descriptor>{v[t[0]], v[t[1]], v[t[2]]}, tm);
+}
+
+// Replaces the vertices and faces of tm by those of `s`, moved from the frame to tm's coordinates.
+template <typename TriangleMesh, typename NamedParameters>
+void replace_mesh(TriangleMesh& tm, Surface s, const Plane_frame& frame, const NamedParameters& np)
+{
+  for(Vector_3d& p : s.points)
+    p = frame.from_frame(p);
+  rebuild_mesh(tm, s, np);
 }
 
 } // namespace internal
@@ -282,20 +311,7 @@ Symmetric_decimation_result symmetric_decimation(TriangleMesh& tm, const Symmetr
   r.largest_error = diagonal > 0 ? std::sqrt(decimator.largest_cost()) / diagonal : 0.0;
   r.after = internal::public_connectivity(out, partner);
 
-  // The mesh rebuilt, in the input's frame.
-  auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                                get_property_map(CGAL::vertex_point, tm));
-  typedef typename boost::property_traits<decltype(vpm)>::value_type Point;
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  CGAL::clear(tm);
-  std::vector<vertex_descriptor> v;
-  for(const internal::Vector_3d& q : out.points) {
-    const internal::Vector_3d p = m.frame.from_frame(q);
-    v.push_back(add_vertex(tm));
-    put(vpm, v.back(), Point(p.x, p.y, p.z));
-  }
-  for(const auto& t : out.triangles)
-    CGAL::Euler::add_face(std::vector<vertex_descriptor>{v[t[0]], v[t[1]], v[t[2]]}, tm);
+  internal::replace_mesh(tm, out, m.frame, np);
   return r;
 }
 

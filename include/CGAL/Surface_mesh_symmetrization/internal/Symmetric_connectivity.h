@@ -93,6 +93,22 @@ inline std::vector<std::uint32_t> pair_vertices(const std::vector<Vector_3d>& q,
   return partner;
 }
 
+// A face whose three corners are their own partners would lie in the plane once they are moved
+// onto it (a face cannot be its own mirror image otherwise): the corner farthest from the plane
+// loses its partner, face after face.
+inline void unpair_faces_in_plane(const Surface& s, std::vector<std::uint32_t>& partner)
+{
+  for(const auto& t : s.triangles) {
+    if(partner[t[0]] != t[0] || partner[t[1]] != t[1] || partner[t[2]] != t[2])
+      continue;
+    std::uint32_t far = t[0];
+    for(std::uint32_t v : t)
+      if(std::abs(s.points[v].x) > std::abs(s.points[far].x))
+        far = v;
+    partner[far] = no_partner;
+  }
+}
+
 // Makes the pairs exact: a pair's points become mirror images (the mean of one and the image of
 // the other), a point that is its own partner goes onto the plane.
 inline void make_pairs_exact(std::vector<Vector_3d>& q, const std::vector<std::uint32_t>& partner)

@@ -18,6 +18,8 @@
 // symmetric connectivity it has. Its priority is the Garland-Heckbert error of its worst edge
 // (plane quadrics of the incident faces, unit normals), the placement the quadric's optimum
 // (with x = 0 for a self-mirrored edge), else the best of the ends and the midpoint.
+// Without mirrored positions (the symmetric simplification: a symmetric connectivity on the
+// positions of an asymmetric surface), each merged vertex goes to its own quadric's optimum.
 
 #include <CGAL/Surface_mesh_symmetrization/internal/Symmetric_connectivity.h>
 
@@ -52,7 +54,8 @@ public:
 
   // `s`: the surface in the plane's frame, pairs exactly mirrored (make_pairs_exact()); `partner`:
   // per point its mirror vertex (pair_vertices()). Throws Bad_input for a non-manifold surface.
-  Symmetric_decimator(const Surface& s, const std::vector<std::uint32_t>& partner)
+  Symmetric_decimator(const Surface& s, const std::vector<std::uint32_t>& partner, bool mirrored_positions = true)
+    : m_mirrored_positions(mirrored_positions)
   {
     std::vector<Vertex> v(s.points.size());
     std::vector<char> used(s.points.size(), 0);
@@ -76,6 +79,7 @@ public:
       for(Vertex w : CGAL::vertices_around_face(m_mesh.halfedge(f), m_mesh))
         m_quadric[w] += r * r.transpose();
     }
+    m_cost_quantum = (std::max)(1e-12 * s.diagonal() * s.diagonal(), (std::numeric_limits<double>::min)());
     for(Edge e : m_mesh.edges())
       push(e);
   }
@@ -144,7 +148,7 @@ private:
   {
     Edge edge, mirror_edge;
     bool paired = false;
-    Vector_3d position;
+    Vector_3d position, mirror_position;
     double cost = 0;
   };
 
@@ -247,7 +251,7 @@ private:
     plan.edge = e;
     if((ma == a && mb == b) || (ma == b && mb == a)) { // self-mirrored: onto the plane
       plan.paired = false;
-      plan.position = place(q, point(a), point(b), true);
+      plan.position = place(q, point(a), point(b), m_mirrored_positions);
       plan.cost = cost_at(q, plan.position);
       return keeps_faces(h, plan.position);
     }
@@ -260,17 +264,19 @@ private:
         if(w == ma || w == mb)
           return false;
     const Vector_3d pa = point(a), pb = point(b);
-    if(!(pa.x * pb.x > 0))
-      return false; // a pair lies on one side
+    const Quadric mq = m_quadric[ma] + m_quadric[mb];
     plan.paired = true;
     plan.mirror_edge = m_mesh.edge(mh.first);
     plan.position = place(q, pa, pb, false);
-    if(!(plan.position.x * pa.x > 0))
-      return false; // the merged vertex must stay on its side
-    plan.cost = (std::max)(cost_at(q, plan.position),
-                           cost_at(m_quadric[ma] + m_quadric[mb], mirrored(plan.position)));
+    if(m_mirrored_positions) {
+      if(!(pa.x * pb.x > 0) || !(plan.position.x * pa.x > 0))
+        return false; // a pair lies on one side, and so does its merged vertex
+      plan.mirror_position = mirrored(plan.position);
+    } else
+      plan.mirror_position = place(mq, point(ma), point(mb), false);
+    plan.cost = (std::max)(cost_at(q, plan.position), cost_at(mq, plan.mirror_position));
     return CGAL::Euler::does_satisfy_link_condition(plan.mirror_edge, m_mesh) && keeps_faces(h, plan.position) &&
-           keeps_faces(mh.first, mirrored(plan.position));
+           keeps_faces(mh.first, plan.mirror_position);
   }
 
   // Collapses edge e to p; the vertex kept, with the quadric of both ends.
@@ -294,7 +300,7 @@ private:
       update_around(s);
       return;
     }
-    const Vertex t = collapse(plan.mirror_edge, mirrored(plan.position));
+    const Vertex t = collapse(plan.mirror_edge, plan.mirror_position);
     m_mirror[s] = t, m_mirror[t] = s;
     update_around(s);
     update_around(t);
@@ -308,6 +314,10 @@ private:
         push(m_mesh.edge(g));
   }
 
+  // The order of a cost in the queue: costs within 1e-12 of the squared diagonal of each other are
+  // mostly ranked equal (then by edge), so that rounding (another pose) seldom changes the order.
+  double rank(double cost) const { return std::floor(cost / m_cost_quantum); }
+
   // Queues e (once per cluster: the one of its two edges with the smaller index).
   void push(Edge e)
   {
@@ -317,10 +327,10 @@ private:
       return;
     if(plan.paired && plan.mirror_edge.idx() < e.idx()) {
       ++m_stamp[plan.mirror_edge];
-      m_queue.push(Entry{plan.cost, std::uint32_t(plan.mirror_edge.idx()), m_stamp[plan.mirror_edge]});
+      m_queue.push(Entry{rank(plan.cost), std::uint32_t(plan.mirror_edge.idx()), m_stamp[plan.mirror_edge]});
       return;
     }
-    m_queue.push(Entry{plan.cost, std::uint32_t(e.idx()), m_stamp[e]});
+    m_queue.push(Entry{rank(plan.cost), std::uint32_t(e.idx()), m_stamp[e]});
   }
 
   Mesh m_mesh;
@@ -330,6 +340,8 @@ private:
   std::priority_queue<Entry> m_queue;
   std::size_t m_collapses = 0;
   double m_largest_cost = 0;
+  double m_cost_quantum = 1;
+  bool m_mirrored_positions = true;
 };
 
 } // namespace internal

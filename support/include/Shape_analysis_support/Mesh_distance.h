@@ -1,0 +1,102 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef SHAPE_ANALYSIS_SUPPORT_MESH_DISTANCE_H
+#define SHAPE_ANALYSIS_SUPPORT_MESH_DISTANCE_H
+
+// The distance between two triangle meshes by which the tests and benchmarks judge a remeshing or
+// a simplification (what Metro measures): the two-sided Hausdorff distance, estimated from the
+// vertices of each mesh and points drawn on its faces in proportion to their areas (a fixed
+// seed: the same meshes give the same figure), each with its exact distance to the other mesh
+// (CGAL's AABB tree); and the mean of those distances.
+
+#include <CGAL/Shape_analysis/internal/Random.h>
+#include <CGAL/Shape_analysis/internal/Triangle_sampling.h>
+#include <CGAL/Shape_analysis/internal/Vector_3d.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Shape_analysis_support {
+
+struct Mesh_distance
+{
+  double hausdorff = 0; ///< the larger of the two one-sided distances
+  double mean = 0;      ///< the mean distance of the samples of both meshes to the other one
+};
+
+namespace mesh_distance_internal {
+
+// The largest and the summed distance to `to` of the vertices of `from` and of `samples` points on
+// its faces; `count` gets the number of points.
+template <typename Point>
+void one_sided(const CGAL::Surface_mesh<Point>& from, const CGAL::Surface_mesh<Point>& to, std::size_t samples,
+               double& largest, double& sum, std::size_t& count)
+{
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
+  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> Tree;
+  namespace SAI = CGAL::Shape_analysis::internal;
+  Tree tree(faces(to).first, faces(to).second, to);
+  tree.accelerate_distance_queries();
+  std::vector<Point> points;
+  for(auto v : vertices(from))
+    points.push_back(from.point(v));
+  std::vector<std::array<SAI::Vector_3d, 3>> corners;
+  std::vector<double> areas;
+  for(auto f : faces(from)) {
+    std::array<SAI::Vector_3d, 3> c;
+    std::size_t k = 0;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, from), from)) {
+      const Point& p = from.point(v);
+      c[k++ % 3] = SAI::Vector_3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    }
+    corners.push_back(c);
+    areas.push_back(0.5 * SAI::cross(c[1] - c[0], c[2] - c[0]).length());
+  }
+  const SAI::Weighted_triangle_sampler sampler(areas);
+  SAI::Random_stream random(20261205);
+  for(std::size_t i = 0; i < samples && !areas.empty(); ++i) {
+    const SAI::Vector_3d q = SAI::Weighted_triangle_sampler::point_in(corners[sampler.triangle(random)], random);
+    points.emplace_back(q.x, q.y, q.z);
+  }
+  for(const Point& p : points) {
+    const double d = std::sqrt(CGAL::to_double(tree.squared_distance(p)));
+    largest = (std::max)(largest, d);
+    sum += d;
+  }
+  count += points.size();
+}
+
+} // namespace mesh_distance_internal
+
+// The distances between `a` and `b`, from their vertices and `samples` points on each, relative to
+// `scale` (the bounding-box diagonal of the reference mesh, say).
+template <typename Point>
+Mesh_distance mesh_distance(const CGAL::Surface_mesh<Point>& a, const CGAL::Surface_mesh<Point>& b, double scale,
+                            std::size_t samples = 200000)
+{
+  double ab = 0, ba = 0, sum = 0;
+  std::size_t count = 0;
+  mesh_distance_internal::one_sided(a, b, samples, ab, sum, count);
+  mesh_distance_internal::one_sided(b, a, samples, ba, sum, count);
+  Mesh_distance d;
+  d.hausdorff = (std::max)(ab, ba) / scale;
+  d.mean = count > 0 ? sum / double(count) / scale : 0.0;
+  return d;
+}
+
+} // namespace Shape_analysis_support
+} // namespace CGAL
+
+#endif // SHAPE_ANALYSIS_SUPPORT_MESH_DISTANCE_H

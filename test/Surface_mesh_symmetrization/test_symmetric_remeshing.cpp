@@ -1,0 +1,304 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Symmetric remeshing: symmetric surfaces with asymmetric tessellations (random diagonals: flips;
+// jittered vertices: mirror points) come out with every vertex, edge and face mirrored, pairs at
+// exact mirror positions, close to the input, closed; the same result in another pose; the copy
+// of one side; CGAL's cow after symmetrization, then decimated to a fifth; bad input. (Compiled in
+// one translation unit with test_symmetrization.cpp: its own namespace.)
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Surface_mesh_symmetrization/symmetric_remeshing.h>
+#include <CGAL/Surface_mesh_symmetrization/symmetric_simplification.h>
+#include <CGAL/Surface_mesh_symmetrization/symmetrize.h>
+#include <CGAL/Surface_mesh_symmetrization/internal/Surface_index.h>
+#include <CGAL/Shape_analysis/internal/Point_tree.h>
+#include <Shape_analysis_support/Procedural_shapes.h>
+#include <Shape_analysis_support/Procedural_symmetric_shapes.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace symmetric_remeshing_test {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+namespace SY = CGAL::Surface_mesh_symmetrization;
+namespace SYI = CGAL::Surface_mesh_symmetrization::internal;
+namespace SAI = CGAL::Shape_analysis::internal;
+namespace SAS = CGAL::Shape_analysis_support;
+typedef SY::Symmetry<Kernel> Symmetry;
+typedef SAI::Vector_3d Vector_3d;
+
+const Symmetry y_reflection = SY::reflective_symmetry<Kernel>(Kernel::Plane_3(0, 1, 0, 0));
+
+// An ellipsoid (symmetric under y -> -y) as a latitude-longitude mesh whose quads are split by a
+// random diagonal, its vertices moved along the surface by up to `jitter` of the grid's spacing
+// (angles), both from `seed`: the surface is symmetric, the tessellation is not.
+Mesh ellipsoid(std::size_t rings, std::size_t sectors, double jitter, unsigned seed)
+{
+  const double pi = 3.14159265358979323846;
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  Mesh m;
+  const auto add = [&](double theta, double phi) {
+    return m.add_vertex(Point(1.5 * std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), 0.7 * std::cos(theta)));
+  };
+  const auto north = add(0, 0), south = add(pi, 0);
+  std::vector<Mesh::Vertex_index> v;
+  for(std::size_t i = 1; i < rings; ++i)
+    for(std::size_t j = 0; j < sectors; ++j) {
+      const double theta = pi * (double(i) + jitter * unit(random)) / double(rings);
+      const double phi = 2 * pi * (double(j) + jitter * unit(random)) / double(sectors);
+      v.push_back(add(theta, phi));
+    }
+  const auto id = [&](std::size_t i, std::size_t j) { return v[(i - 1) * sectors + (j % sectors)]; };
+  for(std::size_t j = 0; j < sectors; ++j) {
+    m.add_face(north, id(1, j), id(1, j + 1));
+    m.add_face(south, id(rings - 1, j + 1), id(rings - 1, j));
+  }
+  for(std::size_t i = 1; i + 1 < rings; ++i)
+    for(std::size_t j = 0; j < sectors; ++j)
+      if(random() % 2) {
+        m.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1));
+        m.add_face(id(i, j), id(i + 1, j + 1), id(i, j + 1));
+      } else {
+        m.add_face(id(i, j), id(i + 1, j), id(i, j + 1));
+        m.add_face(id(i, j + 1), id(i + 1, j), id(i + 1, j + 1));
+      }
+  return m;
+}
+
+SYI::Surface surface_of(const Mesh& m)
+{
+  return SYI::read_mesh(m, get(CGAL::vertex_point, m), SAI::Point_to_vector<Kernel>{Kernel()}, "test").surface;
+}
+
+// The largest distance from a vertex of `b` to the surface of `a`, relative to a's diagonal.
+double largest_vertex_distance(const Mesh& a, const Mesh& b)
+{
+  const SYI::Surface s = surface_of(a);
+  const SYI::Surface_index index(s);
+  double d = 0;
+  for(auto v : vertices(b)) {
+    const Point& p = b.point(v);
+    d = (std::max)(d, std::sqrt(index.closest(Vector_3d(p.x(), p.y(), p.z())).squared_distance));
+  }
+  return d / s.diagonal();
+}
+
+// The largest distance between a vertex and the mirror image of its partner, relative to the
+// diagonal (a vertex without a partner: infinite).
+double largest_pair_error(const Mesh& m, const Symmetry& s)
+{
+  const SY::Symmetric_connectivity c = SY::measure_symmetric_connectivity(m, s);
+  std::vector<Point> p;
+  for(auto v : vertices(m))
+    p.push_back(m.point(v));
+  double e = 0;
+  for(std::size_t i = 0; i < p.size(); ++i) {
+    if(c.mirror_vertex[i] == SY::Symmetric_connectivity::no_vertex)
+      return std::numeric_limits<double>::infinity();
+    e = (std::max)(e, std::sqrt(CGAL::squared_distance(p[i], s.transformation(p[c.mirror_vertex[i]]))));
+  }
+  return e / surface_of(m).diagonal();
+}
+
+// Checks that `m` is closed, valid and fully mirrored, with exact pairs.
+void expect_symmetric_mesh(const Mesh& m, const Symmetry& s)
+{
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m));
+  EXPECT_TRUE(CGAL::is_closed(m));
+  const SY::Symmetric_connectivity c = SY::measure_symmetric_connectivity(m, s);
+  EXPECT_EQ(c.paired_vertices, 1.0);
+  EXPECT_EQ(c.symmetric_edges, 1.0);
+  EXPECT_EQ(c.symmetric_faces, 1.0);
+  EXPECT_LT(largest_pair_error(m, s), 1e-12);
+}
+
+TEST(SymmetricRemeshing, RandomDiagonalsAreFlippedIntoMirrors)
+{
+  const Mesh input = ellipsoid(14, 24, 0.0, 7);
+  const SY::Symmetric_connectivity before = SY::measure_symmetric_connectivity(input, y_reflection);
+  EXPECT_EQ(before.paired_vertices, 1.0);
+  EXPECT_LT(before.symmetric_edges, 0.9);
+  Mesh m = input;
+  const SY::Symmetric_remeshing_result r = SY::symmetric_remeshing(m, y_reflection);
+  EXPECT_EQ(r.mirror_points, 0u);
+  EXPECT_GT(r.flips, 0u);
+  EXPECT_EQ(r.after.symmetric_edges, 1.0);
+  expect_symmetric_mesh(m, y_reflection);
+  EXPECT_LE(std::abs(double(num_faces(m)) - double(num_faces(input))), 0.05 * double(num_faces(input)));
+  EXPECT_LT(largest_vertex_distance(input, m), 0.01);
+}
+
+TEST(SymmetricRemeshing, JitteredVerticesGetMirrorPoints)
+{
+  for(unsigned seed : {1u, 2u, 3u}) {
+    const Mesh input = ellipsoid(16, 28, 0.3, seed);
+    EXPECT_LT(SY::measure_symmetric_connectivity(input, y_reflection).paired_vertices, 0.2);
+    Mesh m = input;
+    const SY::Symmetric_remeshing_result r = SY::symmetric_remeshing(m, y_reflection);
+    EXPECT_GT(r.mirror_points, num_vertices(input) / 2) << seed;
+    EXPECT_GT(r.meta_mesh_faces, num_faces(input)) << seed;
+    expect_symmetric_mesh(m, y_reflection);
+    EXPECT_LE(std::abs(double(num_faces(m)) - double(num_faces(input))), 0.05 * double(num_faces(input))) << seed;
+    EXPECT_LT(largest_vertex_distance(input, m), 0.01) << seed;
+    EXPECT_LT(largest_vertex_distance(m, input), 0.02) << seed;
+  }
+}
+
+TEST(SymmetricRemeshing, CopyOfOneSideIsSymmetricToo)
+{
+  const Mesh input = ellipsoid(16, 28, 0.3, 4);
+  Mesh m = input;
+  const SY::Symmetric_remeshing_result r =
+    SY::symmetric_remeshing(m, y_reflection, SY::parameters::copy_one_side(true).number_of_faces(10000));
+  EXPECT_TRUE(r.copied_whole_side);
+  EXPECT_EQ(r.mirror_points + r.flips, 0u);
+  EXPECT_EQ(r.faces, r.meta_mesh_faces) << "no decimation above the copy's face count";
+  EXPECT_EQ(r.faces, 2 * r.copied_faces) << "every face of the result, or its mirror image, copied";
+  expect_symmetric_mesh(m, y_reflection);
+  EXPECT_LT(largest_vertex_distance(input, m), 0.01);
+}
+
+TEST(SymmetricRemeshing, SameResultMovedInAnotherPose)
+{
+  const Mesh input = ellipsoid(12, 20, 0.25, 9);
+  const SAS::Rigid_transform t =
+    SAS::Rigid_transform::from_axis_angle(Vector_3d(1, 2, -0.7), 1.3, Vector_3d(30, -50, 20));
+  Mesh moved = input;
+  for(auto v : vertices(moved)) {
+    const Point& p = moved.point(v);
+    const Vector_3d q = t(Vector_3d(p.x(), p.y(), p.z()));
+    moved.point(v) = Point(q.x, q.y, q.z);
+  }
+  const Vector_3d n = t(Vector_3d(0, 1, 0)) - t(Vector_3d(0, 0, 0)), o = t(Vector_3d(0, 0, 0));
+  const Symmetry moved_plane = SY::reflective_symmetry<Kernel>(Kernel::Plane_3(n.x, n.y, n.z, -SAI::dot(n, o)));
+  Mesh a = input, b = moved;
+  SY::symmetric_remeshing(a, y_reflection);
+  SY::symmetric_remeshing(b, moved_plane);
+  ASSERT_EQ(num_faces(a), num_faces(b));
+  expect_symmetric_mesh(b, moved_plane);
+  // The same vertices (each one's image has a vertex of the other result within 1e-9).
+  std::vector<Vector_3d> moved_a, in_b;
+  std::vector<std::uint32_t> ids;
+  for(auto v : vertices(b)) {
+    const Point& p = b.point(v);
+    in_b.emplace_back(p.x(), p.y(), p.z());
+    ids.push_back(std::uint32_t(ids.size()));
+  }
+  const SAI::Point_tree tree(in_b, ids);
+  double d = 0;
+  for(auto v : vertices(a)) {
+    const Point& p = a.point(v);
+    std::uint32_t nearest = 0;
+    double d2 = 0;
+    ASSERT_TRUE(tree.nearest(t(Vector_3d(p.x(), p.y(), p.z())), 1.0, nearest, d2));
+    d = (std::max)(d, std::sqrt(d2));
+  }
+  EXPECT_LT(d, 1e-9 * surface_of(a).diagonal());
+}
+
+TEST(SymmetricRemeshing, SymmetrizedCowThenAFifthOfItsFaces)
+{
+  Mesh cow;
+  const std::string path = std::string(SHAPE_ANALYSIS_DATA_DIR) + "/cow.off";
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(path, cow)) << path;
+  std::vector<Symmetry> s;
+  SY::detect_reflective_symmetries(cow, std::back_inserter(s), SY::parameters::maximum_number_of_symmetries(1));
+  ASSERT_FALSE(s.empty());
+  SY::symmetrize(cow, std::vector<Symmetry>{s.front()});
+  const Mesh symmetrized = cow;
+  const SY::Symmetric_remeshing_result r = SY::symmetric_remeshing(cow, s.front());
+  EXPECT_LT(r.before.symmetric_edges, 0.95);
+  expect_symmetric_mesh(cow, s.front());
+  EXPECT_LE(std::abs(double(r.faces) - double(r.faces_before)), 0.05 * double(r.faces_before));
+  EXPECT_LT(largest_vertex_distance(symmetrized, cow), 0.02);
+  EXPECT_LT(largest_vertex_distance(cow, symmetrized), 0.02);
+  // Decimation to a fifth keeps all of it.
+  const SY::Symmetric_decimation_result d =
+    SY::symmetric_decimation(cow, s.front(), SY::parameters::number_of_faces(r.faces_before / 5));
+  EXPECT_LE(std::abs(double(d.faces) - double(r.faces_before / 5)), 0.02 * double(r.faces_before / 5));
+  expect_symmetric_mesh(cow, s.front());
+  EXPECT_LT(largest_vertex_distance(symmetrized, cow), 0.02);
+}
+
+TEST(SymmetricRemeshing, BadInputIsRefusedAndTheMeshKept)
+{
+  const Mesh input = ellipsoid(8, 12, 0.2, 5);
+  Mesh m = input;
+  const auto expect_bad = [&](const auto& call) {
+    EXPECT_THROW(call(), CGAL::Shape_analysis::Bad_input);
+    EXPECT_EQ(num_faces(m), num_faces(input));
+    EXPECT_EQ(num_vertices(m), num_vertices(input));
+  };
+  const Symmetry away = SY::reflective_symmetry<Kernel>(Kernel::Plane_3(0, 1, 0, -100)); // y = 100
+  expect_bad([&] { SY::symmetric_remeshing(m, away); });
+  const Symmetry rotation =
+    SY::affine_symmetry<Kernel>(Kernel::Aff_transformation_3(-1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0));
+  expect_bad([&] { SY::symmetric_remeshing(m, rotation); });
+  expect_bad([&] { SY::symmetric_remeshing(m, y_reflection, SY::parameters::pairing_tolerance(-1.0)); });
+  Mesh open = input;
+  CGAL::Euler::remove_face(halfedge(*faces(open).begin(), open), open);
+  open.collect_garbage();
+  const std::size_t open_faces = num_faces(open);
+  EXPECT_THROW(SY::symmetric_remeshing(open, y_reflection), CGAL::Shape_analysis::Bad_input);
+  EXPECT_EQ(num_faces(open), open_faces);
+  EXPECT_THROW(SY::symmetric_remeshing(m = Mesh(), y_reflection), CGAL::Shape_analysis::Bad_input);
+}
+
+TEST(SymmetricSimplification, RestoredResultLiesOnTheAsymmetricInput)
+{
+  Mesh input = ellipsoid(18, 32, 0.2, 11);
+  for(auto v : vertices(input)) {
+    const Point& p = input.point(v);
+    const auto q = SAS::asymmetric_warp({{p.x(), p.y(), p.z()}}, 0.05);
+    input.point(v) = Point(q[0], q[1], q[2]);
+  }
+  const std::size_t target = num_faces(input) / 5;
+  Mesh restored = input, symmetric = input;
+  const SY::Symmetric_simplification_result r =
+    SY::symmetric_simplification(restored, y_reflection, SY::parameters::number_of_faces(target));
+  const SY::Symmetric_simplification_result s = SY::symmetric_simplification(
+    symmetric, y_reflection, SY::parameters::number_of_faces(target).restore_residuals(false));
+  EXPECT_TRUE(r.restored);
+  EXPECT_FALSE(s.restored);
+  EXPECT_GT(r.symmetry_error_before, 10 * r.symmetry_error_after);
+  for(const SY::Symmetric_simplification_result* x : {&r, &s}) {
+    EXPECT_LE(std::abs(double(x->faces) - double(target)), 0.02 * double(target));
+    EXPECT_EQ(x->remeshing.after.symmetric_edges, 1.0);
+    EXPECT_EQ(x->remeshing.after.paired_vertices, 1.0);
+  }
+  for(const Mesh* m : {&restored, &symmetric}) {
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(*m));
+    EXPECT_TRUE(CGAL::is_closed(*m));
+  }
+  expect_symmetric_mesh(symmetric, y_reflection);
+  // Restoring brings the vertices back onto the input's surface.
+  const double on_input = largest_vertex_distance(input, restored), off_input = largest_vertex_distance(input, symmetric);
+  EXPECT_LT(on_input, 0.01) << off_input;
+  EXPECT_LT(on_input, 0.25 * off_input);
+}
+
+TEST(SymmetricSimplification, BadFaceCountsAreRefused)
+{
+  const Mesh input = ellipsoid(8, 12, 0.2, 5);
+  Mesh m = input;
+  for(std::size_t faces : {std::size_t(0), std::size_t(num_faces(input)) + 1}) {
+    EXPECT_THROW(SY::symmetric_simplification(m, y_reflection, SY::parameters::number_of_faces(faces)),
+                 CGAL::Shape_analysis::Bad_input);
+    EXPECT_EQ(num_faces(m), num_faces(input));
+  }
+  EXPECT_THROW(SY::symmetric_simplification(m, y_reflection), CGAL::Shape_analysis::Bad_input) << "no face count";
+}
+
+} // namespace symmetric_remeshing_test
