@@ -216,7 +216,7 @@ void add_register_command(CLI::App& app, std::function<int()>& run);
 void add_partition_commands(CLI::App& app, std::function<int()>& run); // partition, partition-segment
 void add_coseg_command(CLI::App& app, std::function<int()>& run,
                        const CGAL::Consistent_segmentation::Consistent_segmentation_options& defaults = {});
-void add_symmetry_command(CLI::App& app, std::function<int()>& run); // symmetry detect|symmetrize|enhance|transfer
+void add_symmetry_command(CLI::App& app, std::function<int()>& run); // symmetry detect|symmetrize|enhance|transfer|remesh|decimate
 void add_points_command(CLI::App& app, std::function<int()>& run);   // points scene|background
 void add_points_segment_commands(CLI::App* points, std::function<int()>& run); // points segment|evaluate
 

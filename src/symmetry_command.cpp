@@ -5,6 +5,7 @@
 // shape_analysis symmetry symmetrize IN [--plane a,b,c,d] --output OUT.off --map MAP.txt --report R.json
 // shape_analysis symmetry enhance IN --amount t [--plane a,b,c,d | --symmetric SYM.off] --output OUT.off
 // shape_analysis symmetry transfer IN [--colors IN_COLORS.ply] [--plane a,b,c,d] --output OUT.ply
+// (remesh and decimate: symmetry_remesh_command.cpp)
 
 #include "cli_common.h"
 #include "symmetry_files.h"
@@ -30,29 +31,9 @@ namespace shape_analysis_cli {
 
 namespace {
 
-namespace SMS = CGAL::Surface_mesh_symmetrization;
-typedef SMS::Symmetry<Kernel> Symmetry;
-
-// The files and switches of the commands; the library's options with the library's defaults.
-// `detection` holds --samples, --seed and --threads (the last one also given to symmetrize() and
-// transfer_vertex_attribute()).
-struct Common_options
-{
-  std::string input, report, plane;
-  SMS::Detect_reflective_symmetries_options detection;
-  bool quiet = false;
-  bool verbose = false;
-};
-
 struct Detect_options : Common_options
 {
   std::string output_ply;
-};
-
-struct Symmetrize_command_options : Common_options
-{
-  std::string output_off, map;
-  SMS::Symmetrize_options symmetrization;
 };
 
 struct Enhance_options : Symmetrize_command_options
@@ -80,100 +61,6 @@ std::string name_of(const std::map<std::string, Value>& names, Value value)
       return n.first;
   return std::string();
 }
-
-void add_common_options(CLI::App* cmd, Common_options& o, bool with_plane)
-{
-  cmd->add_option("input", o.input, "Triangle mesh (.off, .ply, .obj, .stl)")->required();
-  if(with_plane)
-    cmd->add_option("--plane", o.plane,
-                    "Symmetry plane a,b,c,d (a x + b y + c z + d = 0); detected when absent");
-  cmd->add_option("--samples", o.detection.number_of_samples, "Number of points sampled for the detection (>= 20)")
-    ->capture_default_str();
-  cmd->add_option("--seed", o.detection.random_seed, "Random seed of the detection (same seed, same result)")
-    ->capture_default_str();
-  cmd->add_option("--threads", o.detection.number_of_threads, "Largest number of threads (0: all cores)")
-    ->capture_default_str();
-  cmd->add_flag("-q,--quiet", o.quiet, "No progress on stderr");
-  cmd->add_flag("-v,--verbose", o.verbose, "Progress on stderr even when it is not a terminal");
-}
-
-// "a,b,c,d" as a plane; Usage_error when it is not four numbers.
-Kernel::Plane_3 parse_plane(const std::string& text)
-{
-  std::vector<double> v;
-  std::stringstream ss(text);
-  std::string item;
-  while(std::getline(ss, item, ',')) {
-    std::size_t used = 0;
-    double x = 0;
-    try {
-      x = std::stod(item, &used);
-    } catch(const std::exception&) {
-      used = 0;
-    }
-    while(used < item.size() && std::isspace(static_cast<unsigned char>(item[used])))
-      ++used;
-    if(item.empty() || used != item.size())
-      throw Usage_error("--plane needs four numbers a,b,c,d (got '" + text + "')");
-    v.push_back(x);
-  }
-  if(v.size() != 4)
-    throw Usage_error("--plane needs four numbers a,b,c,d (got '" + text + "')");
-  return Kernel::Plane_3(v[0], v[1], v[2], v[3]);
-}
-
-// The reflective symmetry to use: the given plane, or the best detected one.
-Symmetry symmetry_of(const Common_options& o, const Mesh& mesh, Progress& progress, double& seconds,
-                     bool& detected)
-{
-  Stopwatch watch;
-  detected = o.plane.empty();
-  if(!detected) {
-    const Symmetry s = SMS::reflective_symmetry<Kernel>(parse_plane(o.plane));
-    seconds = watch.seconds();
-    return s;
-  }
-  progress.stage("detecting the symmetry plane");
-  std::vector<Symmetry> found;
-  const SMS::Detect_reflective_symmetries_options& d = o.detection;
-  SMS::detect_reflective_symmetries(mesh, std::back_inserter(found),
-                                    SMS::parameters::number_of_samples(d.number_of_samples)
-                                      .random_seed(d.random_seed)
-                                      .number_of_threads(d.number_of_threads)
-                                      .maximum_number_of_symmetries(1));
-  seconds = watch.seconds();
-  if(found.empty())
-    throw Cli_error("no reflective symmetry found (give one with --plane a,b,c,d)");
-  return found.front();
-}
-
-// The plane as JSON: unit normal n and offset d of n.x = d, and coefficients a,b,c,d of
-// a x + b y + c z + d = 0 (for --plane).
-Json plane_json(const Symmetry& s)
-{
-  const double a = CGAL::to_double(s.plane.a()), b = CGAL::to_double(s.plane.b()),
-               c = CGAL::to_double(s.plane.c()), d = CGAL::to_double(s.plane.d());
-  const double l = std::sqrt(a * a + b * b + c * c);
-  Json p = Json::object();
-  p["normal"] = Json(std::vector<double>{a / l, b / l, c / l});
-  p["offset"] = -d / l;
-  p["coefficients"] = Json(std::vector<double>{a / l, b / l, c / l, d / l});
-  return p;
-}
-
-std::string plane_text(const Symmetry& s)
-{
-  const Json p = plane_json(s);
-  std::ostringstream out;
-  out << std::setprecision(9);
-  const double a = CGAL::to_double(s.plane.a()), b = CGAL::to_double(s.plane.b()),
-               c = CGAL::to_double(s.plane.c()), d = CGAL::to_double(s.plane.d());
-  const double l = std::sqrt(a * a + b * b + c * c);
-  out << a / l << ',' << b / l << ',' << c / l << ',' << d / l;
-  return out.str();
-}
-
-// ---------------------------------------------------------------------------------------------
 
 int run_detect(const Detect_options& o)
 {
@@ -238,64 +125,6 @@ int run_detect(const Detect_options& o)
   for(const Symmetry& s : found)
     std::cout << "  plane " << plane_text(s) << "  score " << s.score << "  support " << s.support_fraction << '\n';
   return 0;
-}
-
-// Symmetrizes `input.mesh` in place; returns the result and the symmetry used.
-SMS::Symmetrization_result<Kernel> symmetrize_input(const Symmetrize_command_options& o, Input_mesh& input,
-                                                    Progress& progress, Symmetry& symmetry,
-                                                    double& detect_seconds, bool& detected)
-{
-  symmetry = symmetry_of(o, input.mesh, progress, detect_seconds, detected);
-  progress.stage("symmetrizing " + std::to_string(num_vertices(input.mesh)) + " vertices about the plane " +
-                 plane_text(symmetry));
-  std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
-  const SMS::Symmetrize_options& so = o.symmetrization;
-  auto result = SMS::symmetrize(input.mesh, std::vector<Symmetry>{symmetry},
-                                SMS::parameters::number_of_iterations(so.number_of_iterations)
-                                  .shape_weight(so.shape_weight)
-                                  .displacement_weight(so.displacement_weight)
-                                  .number_of_levels(so.number_of_levels)
-                                  .coarsest_level_size(so.coarsest_level_size)
-                                  .symmetry_tolerance(so.symmetry_tolerance)
-                                  .target_symmetry_error(so.target_symmetry_error)
-                                  .final_symmetry_weight(so.final_symmetry_weight)
-                                  .support_weighting(so.support_weighting)
-                                  .number_of_threads(o.detection.number_of_threads)
-                                  .progress_callback(on_progress));
-  progress.done();
-  return result;
-}
-
-// The options of symmetrize() as the library's named parameters (support_weighting: null for the
-// library's choice by the number of symmetries).
-Json symmetrization_parameters(const Symmetrize_command_options& o)
-{
-  const SMS::Symmetrize_options& so = o.symmetrization;
-  Json parameters = Json::object();
-  parameters["number_of_iterations"] = so.number_of_iterations;
-  parameters["shape_weight"] = so.shape_weight;
-  parameters["displacement_weight"] = so.displacement_weight;
-  parameters["number_of_levels"] = so.number_of_levels;
-  parameters["coarsest_level_size"] = so.coarsest_level_size;
-  parameters["symmetry_tolerance"] = so.symmetry_tolerance;
-  parameters["target_symmetry_error"] = so.target_symmetry_error;
-  parameters["final_symmetry_weight"] = so.final_symmetry_weight;
-  parameters["support_weighting"] = so.support_weighting ? Json(*so.support_weighting) : Json();
-  parameters["number_of_threads"] = o.detection.number_of_threads;
-  return parameters;
-}
-
-void add_symmetrization_report(Json& report, const SMS::Symmetrization_result<Kernel>& r,
-                               const Symmetry& s, bool detected, double detect_seconds)
-{
-  report["plane"] = plane_json(s);
-  report["plane_detected"] = detected;
-  report["seconds_detection"] = detect_seconds;
-  report["symmetry_error_before"] = r.symmetry_error_before;
-  report["symmetry_error_after"] = r.symmetry_error_after;
-  report["distortion"] = r.distortion;
-  report["levels"] = Json(r.level_sizes);
-  report["symmetry_errors"] = Json(r.symmetry_errors);
 }
 
 int run_symmetrize(const Symmetrize_command_options& o)
@@ -520,7 +349,8 @@ int run_transfer(const Transfer_options& o)
 void add_symmetry_command(CLI::App& app, std::function<int()>& run)
 {
   CLI::App* symmetry = app.add_subcommand(
-    "symmetry", "Reflective symmetries of a triangle mesh: detect, symmetrize, enhance, transfer attributes.");
+    "symmetry", "Reflective symmetries of a triangle mesh: detect, symmetrize, enhance, transfer attributes, "
+                "remesh and decimate symmetrically.");
   symmetry->require_subcommand(1);
 
   auto d = std::make_shared<Detect_options>();
@@ -603,6 +433,8 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run)
     ->default_str(name_of(source_sides, t->transfer.source_side));
   transfer->add_option("--report", t->report, "JSON report");
   transfer->callback([t, &run]() { run = [t]() { return run_transfer(*t); }; });
+
+  add_symmetry_remesh_commands(symmetry, run);
 }
 
 } // namespace shape_analysis_cli

@@ -4,19 +4,78 @@
 #ifndef SHAPE_ANALYSIS_CLI_SYMMETRY_FILES_H
 #define SHAPE_ANALYSIS_CLI_SYMMETRY_FILES_H
 
-// The files the `symmetry` subcommands write besides meshes: coloured and support PLY, the
-// symmetric map as text, and what maps mesh values back to the input's points and faces.
+// What the `symmetry` subcommands share: their common options, the plane (given or detected) and
+// its JSON, the symmetrization of the input; and the files they write besides meshes: coloured
+// and support PLY, the symmetric map as text, and what maps mesh values back to the input's
+// points and faces.
 
 #include "cli_common.h"
 
 #include <CGAL/IO/Color.h>
 #include <CGAL/Surface_mesh_symmetrization/compute_symmetric_map.h>
+#include <CGAL/Surface_mesh_symmetrization/detect_reflective_symmetries.h>
+#include <CGAL/Surface_mesh_symmetrization/symmetrize.h>
+
+#include <CLI/CLI.hpp>
 
 #include <array>
+#include <functional>
 #include <ostream>
+#include <string>
 #include <vector>
 
 namespace shape_analysis_cli {
+
+namespace SMS = CGAL::Surface_mesh_symmetrization;
+typedef SMS::Symmetry<Kernel> Symmetry;
+
+// The files and switches of the commands; the library's options with the library's defaults.
+// `detection` holds --samples, --seed and --threads (the last one also given to symmetrize() and
+// transfer_vertex_attribute()).
+struct Common_options
+{
+  std::string input, report, plane;
+  SMS::Detect_reflective_symmetries_options detection;
+  bool quiet = false;
+  bool verbose = false;
+};
+
+struct Symmetrize_command_options : Common_options
+{
+  std::string output_off, map;
+  SMS::Symmetrize_options symmetrization;
+};
+
+// The input, --plane, --samples, --seed, --threads, -q and -v.
+void add_common_options(CLI::App* cmd, Common_options& o, bool with_plane);
+
+// "a,b,c,d" as a plane; Usage_error when it is not four numbers.
+Kernel::Plane_3 parse_plane(const std::string& text);
+
+// The reflective symmetry to use: the given plane, or the best detected one (Cli_error when none).
+Symmetry symmetry_of(const Common_options& o, const Mesh& mesh, Progress& progress, double& seconds,
+                     bool& detected);
+
+// The plane as JSON: unit normal n and offset d of n.x = d, and coefficients a,b,c,d of
+// a x + b y + c z + d = 0 (for --plane); and as the text of --plane.
+Json plane_json(const Symmetry& s);
+std::string plane_text(const Symmetry& s);
+
+// Symmetrizes `input.mesh` in place (the plane given or detected); returns the result and the
+// symmetry used.
+SMS::Symmetrization_result<Kernel> symmetrize_input(const Symmetrize_command_options& o, Input_mesh& input,
+                                                    Progress& progress, Symmetry& symmetry,
+                                                    double& detect_seconds, bool& detected);
+
+// The options of symmetrize() as the library's named parameters, and the report's figures of a
+// symmetrization.
+Json symmetrization_parameters(const Symmetrize_command_options& o);
+void add_symmetrization_report(Json& report, const SMS::Symmetrization_result<Kernel>& r,
+                               const Symmetry& s, bool detected, double detect_seconds);
+
+
+// Adds `remesh` and `decimate` to the `symmetry` command (symmetry_remesh_command.cpp).
+void add_symmetry_remesh_commands(CLI::App* symmetry, std::function<int()>& run);
 
 // The positions of the file's points after the mesh's vertices moved (points outside the mesh
 // keep theirs).

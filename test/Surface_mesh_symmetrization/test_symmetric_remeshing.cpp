@@ -243,6 +243,7 @@ TEST(SymmetricRemeshing, BadInputIsRefusedAndTheMeshKept)
   };
   const Symmetry away = SY::reflective_symmetry<Kernel>(Kernel::Plane_3(0, 1, 0, -100)); // y = 100
   expect_bad([&] { SY::symmetric_remeshing(m, away); });
+  expect_bad([&] { SY::symmetrize(m, std::vector<Symmetry>{away}); }); // would flatten the mesh onto the plane
   const Symmetry rotation =
     SY::affine_symmetry<Kernel>(Kernel::Aff_transformation_3(-1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0));
   expect_bad([&] { SY::symmetric_remeshing(m, rotation); });

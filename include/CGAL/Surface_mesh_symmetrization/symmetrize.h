@@ -118,6 +118,16 @@ std::vector<Solver_symmetry> solver_symmetries(const Surface& surface, const Sym
   for(const Symmetry<Kernel>& s : symmetries) {
     Solver_symmetry ss;
     ss.transform = affine_of(s, who);
+    if(s.is_reflection) { // a plane beside the mesh would flatten it onto the plane
+      const Plane_3d plane = plane_of(s, who);
+      bool positive = false, negative = false;
+      for(const Vector_3d& p : surface.points) {
+        const double d = plane.signed_distance(p);
+        positive = positive || d > 0, negative = negative || d < 0;
+      }
+      if(!positive || !negative)
+        throw Bad_input(who + ": the plane of a reflection does not cross the mesh (all of it lies on one side)");
+    }
     if(weighting && !s.support.empty()) {
       if(s.support.size() != surface.number_of_faces())
         throw Bad_input(who + ": a symmetry's support has " + std::to_string(s.support.size()) +
@@ -311,8 +321,8 @@ depend on the number of threads.
 
 \throws CGAL::Shape_analysis::Bad_input if the mesh has no faces, a face that is not a triangle, a
         coordinate that is not finite or no area; if `symmetries` is empty, a symmetry is not
-        invertible or not finite (a degenerate plane), or its support does not have one value
-        per face; or if a parameter is out of its range. The mesh is then left unchanged.
+        invertible or not finite (a degenerate plane), a reflection's plane leaves the whole
+        mesh on one side, or its support does not have one value per face; or if a parameter is out of its range. The mesh is then left unchanged.
 
 \sa `detect_reflective_symmetries()`, `enhance_symmetry()`, `restore_asymmetry()`,
     `transfer_vertex_attribute()`
