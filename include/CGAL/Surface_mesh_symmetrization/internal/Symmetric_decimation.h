@@ -53,8 +53,10 @@ public:
   typedef Eigen::Matrix<double, 4, 4, Eigen::DontAlign> Quadric;
 
   // `s`: the surface in the plane's frame, pairs exactly mirrored (make_pairs_exact()); `partner`:
-  // per point its mirror vertex (pair_vertices()). Throws Bad_input for a non-manifold surface.
-  Symmetric_decimator(const Surface& s, const std::vector<std::uint32_t>& partner, bool mirrored_positions = true)
+  // per point its mirror vertex (pair_vertices()). `added`: per point, a quadric added to that of
+  // its faces (or none). Throws Bad_input for a non-manifold surface.
+  Symmetric_decimator(const Surface& s, const std::vector<std::uint32_t>& partner, bool mirrored_positions = true,
+                      const std::vector<Quadric>* added = nullptr)
     : m_mirrored_positions(mirrored_positions)
   {
     std::vector<Vertex> v(s.points.size());
@@ -79,6 +81,9 @@ public:
       for(Vertex w : CGAL::vertices_around_face(m_mesh.halfedge(f), m_mesh))
         m_quadric[w] += r * r.transpose();
     }
+    for(std::size_t i = 0; added != nullptr && i < s.points.size(); ++i)
+      if(used[i])
+        m_quadric[v[i]] += (*added)[i];
     m_cost_quantum = (std::max)(1e-12 * s.diagonal() * s.diagonal(), (std::numeric_limits<double>::min)());
     for(Edge e : m_mesh.edges())
       push(e);
