@@ -220,7 +220,7 @@ inline std::size_t copy_positive_side(Surface& c, std::vector<std::uint32_t>& p,
 // The vertices on the plane where the copy would pinch the surface: around such a vertex (of a
 // listed face) the faces are not on the positive side over one sector and on the negative side
 // over the other (faces across the plane, their own mirror images, are skipped), or two faces on
-// one side meet at an edge in the plane.
+// one side meet at an edge in the plane; and the corners of a listed face that lies in the plane.
 inline std::vector<std::uint32_t> pinching_vertices(const Surface& c, const std::vector<char>& listed)
 {
   std::vector<int> side(c.triangles.size());
@@ -237,7 +237,15 @@ inline std::vector<std::uint32_t> pinching_vertices(const Surface& c, const std:
       }
   }
   std::vector<std::uint32_t> pinching;
+  std::vector<char> in_plane(c.points.size(), 0); // corners of a listed face in the plane
+  for(std::size_t f = 0; f < c.triangles.size(); ++f)
+    for(std::uint32_t v : c.triangles[f])
+      in_plane[v] = in_plane[v] || (listed[f] && side[f] == 0);
   for(std::uint32_t v = 0; v < c.points.size(); ++v) {
+    if(in_plane[v]) {
+      pinching.push_back(v);
+      continue;
+    }
     if(!check[v])
       continue;
     // The faces around v in order: from the face of corner a (a, b after v) to the face of corner b.
@@ -289,10 +297,11 @@ inline std::size_t copy_across_plane(Surface& s, std::vector<std::uint32_t>& par
       listed = faces_to_copy(c, p);
     cut_at_plane(c, p, listed);
     const std::vector<std::uint32_t> pinching = pinching_vertices(c, listed);
-    for(std::uint32_t v : pinching) {
-      base.points[v].x = shift; // (a vertex of the input: cut vertices do not pinch)
-      base_partner[v] = no_partner;
-    }
+    for(std::uint32_t v : pinching)
+      if(v < base.points.size()) { // (cut vertices do not pinch)
+        base.points[v].x = shift;
+        base_partner[v] = no_partner;
+      }
     if(!pinching.empty())
       continue;
     const std::size_t copied = copy_positive_side(c, p, listed);
