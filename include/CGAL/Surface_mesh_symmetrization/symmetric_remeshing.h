@@ -118,8 +118,9 @@ edge there split); pairs move to exact mirror positions (their mean); edges with
 are flipped when the new edge has one, best first, unless the flip folds the surface or moves it
 by more than a tenth of the mean edge length; the faces still without a mirror face are cut at
 the plane and those on the positive side (where the plane's normal points) copied across it in
-place of those on the negative side (the whole positive side when copying only those would pinch
-the surface). The result, about one and a half times as many faces as the input on a symmetrized
+place of those on the negative side (a vertex on the plane where the copy would pinch the surface
+first moves off it by a hundredth of the mean edge length; the whole positive side is copied when
+copying only those faces still does not give a closed manifold surface). The result, about one and a half times as many faces as the input on a symmetrized
 mesh, is then decimated with `symmetric_decimation()` to `number_of_faces`.
 
 Supported: one reflection plane, applied to the whole surface (partial symmetries are remeshed
