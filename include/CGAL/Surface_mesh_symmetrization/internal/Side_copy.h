@@ -7,15 +7,17 @@
 // Symmetric connectivity by copying one side across the plane (the thesis' fallback of symmetric
 // remeshing, and on the whole surface the simple alternative to it), on a surface given in the
 // frame of its reflection plane (x -> -x) with exact mirror pairs:
-// - the faces to copy (those without a mirror face, or all of them) are cut at the plane: each of
+// - the faces to copy (those without a mirror face and those across the plane that are not their
+//   own mirror image, or all of them) are cut at the plane: each of
 //   their edges with ends strictly on both sides gets a vertex on the plane, and every face with
 //   such an edge splits into pieces on one side each;
 // - their pieces on the negative side are dropped and replaced by the mirror images of those on
 //   the positive side (new vertices where a positive vertex has no partner).
 // The set of faces without a mirror face is its own mirror image up to its border (an edge of a
 // face with a mirror face has a mirror edge), so the copy fits in: the result is closed when the
-// input is, unless two copied pieces meet at a vertex only (then it is not manifold, and the
-// caller copies all faces instead).
+// input is, unless two copied pieces meet at a vertex only. Where the copy would pinch the surface
+// so, at a vertex on the plane, that vertex moves off the plane and the copy starts again; when the
+// result still is not a closed manifold, the caller copies all faces instead.
 
 #include <CGAL/Surface_mesh_symmetrization/internal/Symmetric_connectivity.h>
 
