@@ -21,6 +21,8 @@
 
 #include <gtest/gtest.h>
 
+#include "mesh_distance_checks.h"
+
 #include <cmath>
 #include <random>
 #include <string>
@@ -77,23 +79,8 @@ Mesh ellipsoid(std::size_t rings, std::size_t sectors, double jitter, unsigned s
   return m;
 }
 
-SYI::Surface surface_of(const Mesh& m)
-{
-  return SYI::read_mesh(m, get(CGAL::vertex_point, m), SAI::Point_to_vector<Kernel>{Kernel()}, "test").surface;
-}
-
-// The largest distance from a vertex of `b` to the surface of `a`, relative to a's diagonal.
-double largest_vertex_distance(const Mesh& a, const Mesh& b)
-{
-  const SYI::Surface s = surface_of(a);
-  const SYI::Surface_index index(s);
-  double d = 0;
-  for(auto v : vertices(b)) {
-    const Point& p = b.point(v);
-    d = (std::max)(d, std::sqrt(index.closest(Vector_3d(p.x(), p.y(), p.z())).squared_distance));
-  }
-  return d / s.diagonal();
-}
+using symmetric_mesh_checks::largest_vertex_distance;
+using symmetric_mesh_checks::surface_of;
 
 // The largest distance between a vertex and the mirror image of its partner, relative to the
 // diagonal (a vertex without a partner: infinite).
