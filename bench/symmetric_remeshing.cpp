@@ -6,12 +6,12 @@
 //   - symmetric_remeshing() of the symmetrized mesh to its face count: seconds, fractions of the
 //     vertices, edges and faces with mirror partners (measured again from positions), faces, the
 //     two-sided Hausdorff distance (support's mesh_distance, fixed seed; relative to the input's
-//     bounding-box diagonal) to the symmetrized mesh and to the input, and the same for the copy of
-//     one side (copy_one_side);
+//     bounding-box diagonal) to the symmetrized mesh and to the input, the mean normal deviation
+//     (degrees) to the symmetrized mesh, and the same for the copy of one side (copy_one_side);
 //   - symmetric_decimation() of the remeshed mesh to a fifth of the faces: seconds, fractions, faces;
 //   - symmetric_simplification() of the input to a fifth with the residuals restored, beside CGAL's
 //     Garland-Heckbert edge collapse (GarlandHeckbert_plane_policies) to the same face count:
-//     seconds and Hausdorff distance to the input, and their ratio.
+//     seconds, Hausdorff distance and mean normal deviation to the input, and the distances' ratio.
 // Meshes: CGAL's (--meshes, default cow, camel, armadillo) and the PSB subset in
 // ../shared/data/psb (--psb DIR; --classes, --ids select; skipped when absent).
 //   bench_symmetric_remeshing [--data DIR] [--meshes a,b] [--psb DIR] [--classes c,d] [--ids 1-8]
@@ -75,7 +75,9 @@ SAS::Json remesh(const Mesh& symmetrized, const Mesh& input, const Symmetry& s, 
   j["flips"] = r.flips;
   j["copied_faces"] = r.copied_faces;
   j["copied_whole_side"] = r.copied_whole_side;
-  j["hausdorff_to_symmetrized"] = SAS::mesh_distance(m, symmetrized, diagonal).hausdorff;
+  const SAS::Mesh_distance to_symmetrized = SAS::mesh_distance(m, symmetrized, diagonal);
+  j["hausdorff_to_symmetrized"] = to_symmetrized.hausdorff;
+  j["normal_deviation_to_symmetrized"] = to_symmetrized.normal_deviation;
   j["hausdorff_to_input"] = SAS::mesh_distance(m, input, diagonal).hausdorff;
   if(!copy) { // then a fifth of the faces
     const std::size_t target = r.faces_before / 5;
@@ -103,7 +105,9 @@ SAS::Json simplify(const Mesh& input, const Symmetry& s, double diagonal, std::s
   j["seconds"] = seconds_since(start);
   j["faces"] = r.faces;
   j["symmetric_edges_by_pairs"] = r.remeshing.after.symmetric_edges;
-  j["hausdorff"] = SAS::mesh_distance(ours, input, diagonal).hausdorff;
+  const SAS::Mesh_distance d = SAS::mesh_distance(ours, input, diagonal);
+  j["hausdorff"] = d.hausdorff;
+  j["normal_deviation"] = d.normal_deviation;
   Mesh gh = input;
   start = std::chrono::steady_clock::now();
   SMS::GarlandHeckbert_plane_policies<Mesh, Kernel> policies(gh);
@@ -113,7 +117,9 @@ SAS::Json simplify(const Mesh& input, const Symmetry& s, double diagonal, std::s
   gh.collect_garbage();
   j["cgal_seconds"] = seconds_since(start);
   j["cgal_faces"] = num_faces(gh);
-  j["cgal_hausdorff"] = SAS::mesh_distance(gh, input, diagonal).hausdorff;
+  const SAS::Mesh_distance dg = SAS::mesh_distance(gh, input, diagonal);
+  j["cgal_hausdorff"] = dg.hausdorff;
+  j["cgal_normal_deviation"] = dg.normal_deviation;
   j["hausdorff_ratio"] = j["hausdorff"].get<double>() / j["cgal_hausdorff"].get<double>();
   return j;
 }

@@ -16,6 +16,7 @@
 #include <CGAL/Surface_mesh_symmetrization/symmetrize.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Surface_index.h>
 #include <CGAL/Shape_analysis/internal/Point_tree.h>
+#include <Shape_analysis_support/Mesh_distance.h>
 #include <Shape_analysis_support/Procedural_shapes.h>
 #include <Shape_analysis_support/Procedural_symmetric_shapes.h>
 
@@ -275,6 +276,70 @@ TEST(SymmetricSimplification, RestoredResultLiesOnTheAsymmetricInput)
   const double on_input = largest_vertex_distance(input, restored), off_input = largest_vertex_distance(input, symmetric);
   EXPECT_LT(on_input, 0.01) << off_input;
   EXPECT_LT(on_input, 0.25 * off_input);
+}
+
+// The refinement of a restored meta-mesh: a coarse mesh of symmetric connectivity on a symmetric
+// ellipsoid, restored onto a warped fine copy of it, is refined where it leaves that copy; the
+// splits keep it mirrored (the new points paired, mutually, and at mirror positions) and bring it
+// closer to the warped surface.
+TEST(SymmetricSimplification, RefinementFollowsTheInputAndStaysMirrored)
+{
+  Mesh coarse = ellipsoid(8, 12, 0.0, 3);
+  SY::symmetric_remeshing(coarse, y_reflection);
+  const SY::Symmetric_connectivity c = SY::measure_symmetric_connectivity(coarse, y_reflection);
+  ASSERT_EQ(c.symmetric_edges, 1.0);
+  std::vector<std::uint32_t> partner;
+  for(std::size_t m : c.mirror_vertex)
+    partner.push_back(std::uint32_t(m));
+  const Mesh fine = ellipsoid(40, 64, 0.0, 4);
+  const SYI::Surface symmetrized = surface_of(fine);
+  std::vector<Kernel::Vector_3> residuals;
+  Mesh input = fine;
+  for(auto v : vertices(input)) {
+    const Point p = input.point(v);
+    const auto q = SAS::asymmetric_warp({{p.x(), p.y(), p.z()}}, 0.08);
+    input.point(v) = Point(q[0], q[1], q[2]);
+    residuals.push_back(input.point(v) - p);
+  }
+  SYI::Surface symmetric = surface_of(coarse), restored = symmetric;
+  const SYI::Surface_index index(symmetrized);
+  const std::vector<Vector_3d> normals = symmetric.vertex_normals();
+  std::uint32_t hint = SYI::Surface_index::no_face;
+  for(std::size_t i = 0; i < restored.points.size(); ++i)
+    restored.points[i] = SYI::restored_point(index, symmetrized, residuals, symmetric.points[i], normals[i], hint, true);
+  const auto to_mesh = [](const SYI::Surface& s) {
+    Mesh m;
+    std::vector<Mesh::Vertex_index> v;
+    for(const Vector_3d& p : s.points)
+      v.push_back(m.add_vertex(Point(p.x, p.y, p.z)));
+    for(const auto& t : s.triangles)
+      m.add_face(v[t[0]], v[t[1]], v[t[2]]);
+    return m;
+  };
+  const double diagonal = symmetrized.diagonal();
+  const double before = SAS::mesh_distance(to_mesh(restored), input, diagonal, 20000).hausdorff;
+  const std::size_t faces = symmetric.triangles.size();
+  const std::size_t added = SYI::refine_restored(symmetric, restored, partner, index, symmetrized, residuals,
+                                                 0.002 * diagonal, 100 * faces, 3);
+  EXPECT_GT(added, 0u);
+  EXPECT_EQ(partner.size(), symmetric.points.size());
+  for(std::size_t i = 0; i < partner.size(); ++i)
+    ASSERT_EQ(partner[partner[i]], i) << "pairs are mutual";
+  const Mesh refined = to_mesh(symmetric);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(refined));
+  EXPECT_TRUE(CGAL::is_closed(refined));
+  const SY::Symmetric_connectivity after = SY::measure_symmetric_connectivity(refined, y_reflection);
+  EXPECT_EQ(after.symmetric_edges, 1.0);
+  EXPECT_EQ(after.symmetric_faces, 1.0);
+  for(std::size_t i = 0; i < partner.size(); ++i)
+    EXPECT_EQ(after.mirror_vertex[i], partner[i]);
+  const double now = SAS::mesh_distance(to_mesh(restored), input, diagonal, 20000).hausdorff;
+  EXPECT_LT(now, 0.5 * before) << before;
+  // A face budget below the first round's faces stops it.
+  SYI::Surface s2 = surface_of(coarse), r2 = s2;
+  std::vector<std::uint32_t> p2(c.mirror_vertex.begin(), c.mirror_vertex.end());
+  EXPECT_EQ(SYI::refine_restored(s2, r2, p2, index, symmetrized, residuals, 0.002 * diagonal, faces, 3), 0u);
+  EXPECT_EQ(s2.triangles.size(), faces);
 }
 
 TEST(SymmetricSimplification, BadFaceCountsAreRefused)

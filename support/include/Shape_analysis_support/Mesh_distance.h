@@ -8,7 +8,8 @@
 // a simplification (what Metro measures): the two-sided Hausdorff distance, estimated from the
 // vertices of each mesh and points drawn on its faces in proportion to their areas (a fixed
 // seed: the same meshes give the same figure), each with its exact distance to the other mesh
-// (CGAL's AABB tree); and the mean of those distances.
+// (CGAL's AABB tree); the mean of those distances; and the mean angle between the normals of a
+// sample's face and of the nearest face of the other mesh.
 
 #include <CGAL/Shape_analysis/internal/Random.h>
 #include <CGAL/Shape_analysis/internal/Triangle_sampling.h>
@@ -32,15 +33,40 @@ struct Mesh_distance
 {
   double hausdorff = 0; ///< the larger of the two one-sided distances
   double mean = 0;      ///< the mean distance of the samples of both meshes to the other one
+  /// the mean angle, in degrees, between the normal of the face of each sample drawn on a face and
+  /// the normal of the face of the other mesh nearest to it (a blurred or misplaced crease turns
+  /// the nearest faces away from the samples' own)
+  double normal_deviation = 0;
 };
 
 namespace mesh_distance_internal {
 
+// The unit normals of the faces of `m` (zero for a degenerate face).
+template <typename Point>
+std::vector<CGAL::Shape_analysis::internal::Vector_3d> face_normals(const CGAL::Surface_mesh<Point>& m)
+{
+  namespace SAI = CGAL::Shape_analysis::internal;
+  std::vector<SAI::Vector_3d> n(m.number_of_faces() + m.number_of_removed_faces());
+  for(auto f : faces(m)) {
+    std::array<SAI::Vector_3d, 3> c;
+    std::size_t k = 0;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, m), m)) {
+      const Point& p = m.point(v);
+      c[k++ % 3] = SAI::Vector_3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    }
+    const SAI::Vector_3d a = SAI::cross(c[1] - c[0], c[2] - c[0]);
+    const double l = a.length();
+    n[std::size_t(f)] = l > 0 ? a / l : SAI::Vector_3d(0, 0, 0);
+  }
+  return n;
+}
+
 // The largest and the summed distance to `to` of the vertices of `from` and of `samples` points on
-// its faces; `count` gets the number of points.
+// its faces; `count` gets the number of points; `angles` the summed angle (degrees) between the
+// normals of the face of each sample and of its nearest face of `to`, `angle_count` their number.
 template <typename Point>
 void one_sided(const CGAL::Surface_mesh<Point>& from, const CGAL::Surface_mesh<Point>& to, std::size_t samples,
-               double& largest, double& sum, std::size_t& count)
+               double& largest, double& sum, std::size_t& count, double& angles, std::size_t& angle_count)
 {
   typedef CGAL::Surface_mesh<Point> Mesh;
   typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
@@ -54,7 +80,9 @@ void one_sided(const CGAL::Surface_mesh<Point>& from, const CGAL::Surface_mesh<P
     points.push_back(from.point(v));
   std::vector<std::array<SAI::Vector_3d, 3>> corners;
   std::vector<double> areas;
+  std::vector<std::size_t> face_of;
   for(auto f : faces(from)) {
+    face_of.push_back(std::size_t(f));
     std::array<SAI::Vector_3d, 3> c;
     std::size_t k = 0;
     for(auto v : CGAL::vertices_around_face(halfedge(f, from), from)) {
@@ -66,14 +94,25 @@ void one_sided(const CGAL::Surface_mesh<Point>& from, const CGAL::Surface_mesh<P
   }
   const SAI::Weighted_triangle_sampler sampler(areas);
   SAI::Random_stream random(20261205);
+  const std::size_t vertex_points = points.size();
+  std::vector<std::size_t> sample_face;
   for(std::size_t i = 0; i < samples && !areas.empty(); ++i) {
-    const SAI::Vector_3d q = SAI::Weighted_triangle_sampler::point_in(corners[sampler.triangle(random)], random);
+    const std::size_t t = sampler.triangle(random);
+    const SAI::Vector_3d q = SAI::Weighted_triangle_sampler::point_in(corners[t], random);
     points.emplace_back(q.x, q.y, q.z);
+    sample_face.push_back(face_of[t]);
   }
-  for(const Point& p : points) {
-    const double d = std::sqrt(CGAL::to_double(tree.squared_distance(p)));
+  const std::vector<SAI::Vector_3d> from_normals = face_normals(from), to_normals = face_normals(to);
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    const auto nearest = tree.closest_point_and_primitive(points[i]);
+    const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(points[i], nearest.first)));
     largest = (std::max)(largest, d);
     sum += d;
+    if(i >= vertex_points) {
+      const double c = SAI::dot(from_normals[sample_face[i - vertex_points]], to_normals[std::size_t(nearest.second)]);
+      angles += std::acos((std::max)(-1.0, (std::min)(1.0, c))) * 180.0 / CGAL_PI;
+      ++angle_count;
+    }
   }
   count += points.size();
 }
@@ -86,13 +125,14 @@ template <typename Point>
 Mesh_distance mesh_distance(const CGAL::Surface_mesh<Point>& a, const CGAL::Surface_mesh<Point>& b, double scale,
                             std::size_t samples = 200000)
 {
-  double ab = 0, ba = 0, sum = 0;
-  std::size_t count = 0;
-  mesh_distance_internal::one_sided(a, b, samples, ab, sum, count);
-  mesh_distance_internal::one_sided(b, a, samples, ba, sum, count);
+  double ab = 0, ba = 0, sum = 0, angles = 0;
+  std::size_t count = 0, angle_count = 0;
+  mesh_distance_internal::one_sided(a, b, samples, ab, sum, count, angles, angle_count);
+  mesh_distance_internal::one_sided(b, a, samples, ba, sum, count, angles, angle_count);
   Mesh_distance d;
   d.hausdorff = (std::max)(ab, ba) / scale;
   d.mean = count > 0 ? sum / double(count) / scale : 0.0;
+  d.normal_deviation = angle_count > 0 ? angles / double(angle_count) : 0.0;
   return d;
 }
 
