@@ -309,11 +309,7 @@ TEST(SymmetricSimplification, RefinementFollowsTheInputAndStaysMirrored)
     restored.points[i] = SYI::restored_point(index, symmetrized, residuals, symmetric.points[i], normals[i], hint, true);
   const auto to_mesh = [](const SYI::Surface& s) {
     Mesh m;
-    std::vector<Mesh::Vertex_index> v;
-    for(const Vector_3d& p : s.points)
-      v.push_back(m.add_vertex(Point(p.x, p.y, p.z)));
-    for(const auto& t : s.triangles)
-      m.add_face(v[t[0]], v[t[1]], v[t[2]]);
+    SYI::rebuild_mesh(m, s, SY::parameters::default_values());
     return m;
   };
   const double diagonal = symmetrized.diagonal();

@@ -41,24 +41,27 @@ struct Mesh_distance
 
 namespace mesh_distance_internal {
 
-// The unit normals of the faces of `m` (zero for a degenerate face).
-template <typename Point>
-std::vector<CGAL::Shape_analysis::internal::Vector_3d> face_normals(const CGAL::Surface_mesh<Point>& m)
+// The unit normal of a triangle (zero when degenerate).
+inline CGAL::Shape_analysis::internal::Vector_3d unit_normal(const std::array<CGAL::Shape_analysis::internal::Vector_3d, 3>& c)
 {
-  namespace SAI = CGAL::Shape_analysis::internal;
-  std::vector<SAI::Vector_3d> n(m.number_of_faces() + m.number_of_removed_faces());
-  for(auto f : faces(m)) {
-    std::array<SAI::Vector_3d, 3> c;
-    std::size_t k = 0;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, m), m)) {
-      const Point& p = m.point(v);
-      c[k++ % 3] = SAI::Vector_3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    }
-    const SAI::Vector_3d a = SAI::cross(c[1] - c[0], c[2] - c[0]);
-    const double l = a.length();
-    n[std::size_t(f)] = l > 0 ? a / l : SAI::Vector_3d(0, 0, 0);
+  const CGAL::Shape_analysis::internal::Vector_3d a = CGAL::Shape_analysis::internal::cross(c[1] - c[0], c[2] - c[0]);
+  const double l = a.length();
+  return l > 0 ? a / l : CGAL::Shape_analysis::internal::Vector_3d(0, 0, 0);
+}
+
+// The corners of face f of m.
+template <typename Point>
+std::array<CGAL::Shape_analysis::internal::Vector_3d, 3>
+corners_of(const CGAL::Surface_mesh<Point>& m, typename CGAL::Surface_mesh<Point>::Face_index f)
+{
+  std::array<CGAL::Shape_analysis::internal::Vector_3d, 3> c;
+  std::size_t k = 0;
+  for(auto v : CGAL::vertices_around_face(halfedge(f, m), m)) {
+    const Point& p = m.point(v);
+    c[k++ % 3] = CGAL::Shape_analysis::internal::Vector_3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                                           CGAL::to_double(p.z()));
   }
-  return n;
+  return c;
 }
 
 // The largest and the summed distance to `to` of the vertices of `from` and of `samples` points on
@@ -80,36 +83,31 @@ void one_sided(const CGAL::Surface_mesh<Point>& from, const CGAL::Surface_mesh<P
     points.push_back(from.point(v));
   std::vector<std::array<SAI::Vector_3d, 3>> corners;
   std::vector<double> areas;
-  std::vector<std::size_t> face_of;
   for(auto f : faces(from)) {
-    face_of.push_back(std::size_t(f));
-    std::array<SAI::Vector_3d, 3> c;
-    std::size_t k = 0;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, from), from)) {
-      const Point& p = from.point(v);
-      c[k++ % 3] = SAI::Vector_3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    }
+    const std::array<SAI::Vector_3d, 3> c = corners_of(from, f);
     corners.push_back(c);
     areas.push_back(0.5 * SAI::cross(c[1] - c[0], c[2] - c[0]).length());
   }
   const SAI::Weighted_triangle_sampler sampler(areas);
   SAI::Random_stream random(20261205);
   const std::size_t vertex_points = points.size();
-  std::vector<std::size_t> sample_face;
+  std::vector<SAI::Vector_3d> sample_normal; // of the face each sample lies on
   for(std::size_t i = 0; i < samples && !areas.empty(); ++i) {
     const std::size_t t = sampler.triangle(random);
     const SAI::Vector_3d q = SAI::Weighted_triangle_sampler::point_in(corners[t], random);
     points.emplace_back(q.x, q.y, q.z);
-    sample_face.push_back(face_of[t]);
+    sample_normal.push_back(unit_normal(corners[t]));
   }
-  const std::vector<SAI::Vector_3d> from_normals = face_normals(from), to_normals = face_normals(to);
+  std::vector<SAI::Vector_3d> to_normal(to.number_of_faces() + to.number_of_removed_faces());
+  for(auto f : faces(to))
+    to_normal[std::size_t(f)] = unit_normal(corners_of(to, f));
   for(std::size_t i = 0; i < points.size(); ++i) {
     const auto nearest = tree.closest_point_and_primitive(points[i]);
     const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(points[i], nearest.first)));
     largest = (std::max)(largest, d);
     sum += d;
     if(i >= vertex_points) {
-      const double c = SAI::dot(from_normals[sample_face[i - vertex_points]], to_normals[std::size_t(nearest.second)]);
+      const double c = SAI::dot(sample_normal[i - vertex_points], to_normal[std::size_t(nearest.second)]);
       angles += std::acos((std::max)(-1.0, (std::min)(1.0, c))) * 180.0 / CGAL_PI;
       ++angle_count;
     }
