@@ -13,13 +13,17 @@
 // with CGAL's Euler operations and link condition. A cluster is
 // - a pair: edge (a, b) and its mirror (a', b'), four vertices off the plane and apart (neither
 //   mirror vertex in the other edge's stars); both collapse, to mirrored positions on a's side;
-// - a self-mirrored edge: (a, b) on the plane, or (a, a') across it; it collapses onto the plane.
+// - a self-mirrored edge: (a, b) on the plane, or (a, a') across it; it collapses onto the plane;
+// - a T: edge (p, b) from a vertex p on the plane and its mirror (p, b'); both collapse into p,
+//   which stays on the plane (b and b' not adjacent, and their other common neighbours
+//   neighbours of p, so that the second collapse remains possible after the first).
 // Edges without a mirror edge, and edges at a border, are never collapsed: the mesh keeps the
 // symmetric connectivity it has. Its priority is the Garland-Heckbert error of its worst edge
 // (plane quadrics of the incident faces, unit normals), the placement the quadric's optimum
-// (with x = 0 for a self-mirrored edge), else the best of the ends and the midpoint.
+// (with x = 0 for a self-mirrored edge or a T), else the best of the ends and the midpoint.
 // Without mirrored positions (the symmetric simplification: a symmetric connectivity on the
-// positions of an asymmetric surface), each merged vertex goes to its own quadric's optimum.
+// positions of an asymmetric surface), each merged vertex goes to its own quadric's optimum, and
+// the quadrics are given (the planes of the input's faces under each vertex's faces).
 
 #include <CGAL/Surface_mesh_symmetrization/internal/Symmetric_connectivity.h>
 
@@ -35,6 +39,7 @@
 #include <functional>
 #include <limits>
 #include <queue>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -53,10 +58,10 @@ public:
   typedef Eigen::Matrix<double, 4, 4, Eigen::DontAlign> Quadric;
 
   // `s`: the surface in the plane's frame, pairs exactly mirrored (make_pairs_exact()); `partner`:
-  // per point its mirror vertex (pair_vertices()). `added`: per point, a quadric added to that of
-  // its faces (or none). Throws Bad_input for a non-manifold surface.
+  // per point its mirror vertex (pair_vertices()). `given`: per point, the quadric it starts with
+  // (else the planes of its faces). Throws Bad_input for a non-manifold surface.
   Symmetric_decimator(const Surface& s, const std::vector<std::uint32_t>& partner, bool mirrored_positions = true,
-                      const std::vector<Quadric>* added = nullptr)
+                      const std::vector<Quadric>* given = nullptr)
     : m_mirrored_positions(mirrored_positions)
   {
     std::vector<Vertex> v(s.points.size());
@@ -77,13 +82,13 @@ public:
       if(used[i] && partner[i] != no_partner && used[partner[i]])
         m_mirror[v[i]] = v[partner[i]];
     for(auto f : m_mesh.faces()) {
-      const Eigen::Vector4d r = face_plane(m_mesh.halfedge(f));
+      const Eigen::Vector4d r = given == nullptr ? face_plane(m_mesh.halfedge(f)) : Eigen::Vector4d::Zero();
       for(Vertex w : CGAL::vertices_around_face(m_mesh.halfedge(f), m_mesh))
         m_quadric[w] += r * r.transpose();
     }
-    for(std::size_t i = 0; added != nullptr && i < s.points.size(); ++i)
+    for(std::size_t i = 0; given != nullptr && i < s.points.size(); ++i)
       if(used[i])
-        m_quadric[v[i]] += (*added)[i];
+        m_quadric[v[i]] = (*given)[i];
     m_cost_quantum = (std::max)(1e-12 * s.diagonal() * s.diagonal(), (std::numeric_limits<double>::min)());
     for(Edge e : m_mesh.edges())
       push(e);
@@ -93,6 +98,7 @@ public:
   Vertex mirror(Vertex v) const { return m_mirror[v]; }
   std::size_t number_of_faces() const { return m_mesh.number_of_faces(); }
   std::size_t collapses() const { return m_collapses; }
+  std::size_t t_clusters() const { return m_t_clusters; } ///< of the collapses, the T clusters
   double largest_cost() const { return m_largest_cost; }
 
   // Collapses the cheapest valid cluster whose cost is at most `maximum_cost`; false when there is
@@ -152,7 +158,8 @@ private:
   struct Plan
   {
     Edge edge, mirror_edge;
-    bool paired = false;
+    bool paired = false, t_cluster = false;
+    Vertex far_end; // of a T's mirror edge
     Vector_3d position, mirror_position;
     double cost = 0;
   };
@@ -260,9 +267,11 @@ private:
       plan.cost = cost_at(q, plan.position);
       return keeps_faces(h, plan.position);
     }
+    if((ma == a) != (mb == b))
+      return plan_t_cluster(h, q, plan);
     const auto mh = CGAL::halfedge(ma, mb, m_mesh);
-    if(!mh.second || ma == a || mb == b || ma == b || mb == a)
-      return false; // no mirror edge, or one touching the plane
+    if(!mh.second || ma == b || mb == a)
+      return false; // no mirror edge
     // The mirror edge apart: neither of its ends in the stars of a and b.
     for(Vertex end : {a, b})
       for(Vertex w : CGAL::vertices_around_target(m_mesh.halfedge(end), m_mesh))
@@ -284,6 +293,38 @@ private:
            keeps_faces(mh.first, plan.mirror_position);
   }
 
+  // The cluster of the edge of h from a vertex on the plane to one off it, with its mirror edge
+  // (a T): both collapse into the vertex on the plane, which stays on it. The second collapse
+  // must remain possible after the first: the two off-plane ends are not adjacent, and their
+  // other common neighbours are neighbours of the plane vertex.
+  bool plan_t_cluster(Halfedge h, const Quadric& q, Plan& plan) const
+  {
+    const Vertex p = m_mirror[m_mesh.source(h)] == m_mesh.source(h) ? m_mesh.source(h) : m_mesh.target(h);
+    const Vertex o = p == m_mesh.source(h) ? m_mesh.target(h) : m_mesh.source(h), mo = m_mirror[o];
+    const auto mh = CGAL::halfedge(p, mo, m_mesh);
+    if(!mh.second || mo == o || on_border(mo) || m_mesh.number_of_vertices() < 6)
+      return false; // (two vertices go: at least a tetrahedron is left)
+    for(Vertex w : CGAL::vertices_around_target(m_mesh.halfedge(o), m_mesh)) {
+      if(w == mo)
+        return false;
+      if(w == p)
+        continue;
+      bool common = false, next_to_p = false;
+      for(Vertex x : CGAL::vertices_around_target(m_mesh.halfedge(w), m_mesh))
+        common = common || x == mo, next_to_p = next_to_p || x == p;
+      if(common && !next_to_p)
+        return false;
+    }
+    const Quadric all = q + m_quadric[mo];
+    plan.t_cluster = true;
+    plan.far_end = mo;
+    plan.mirror_edge = m_mesh.edge(mh.first);
+    plan.position = place(all, point(p), point(o), m_mirrored_positions);
+    plan.cost = cost_at(all, plan.position);
+    return CGAL::Euler::does_satisfy_link_condition(plan.mirror_edge, m_mesh) && keeps_faces(h, plan.position) &&
+           keeps_faces(mh.first, plan.position);
+  }
+
   // Collapses edge e to p; the vertex kept, with the quadric of both ends.
   Vertex collapse(Edge e, const Vector_3d& p)
   {
@@ -300,6 +341,16 @@ private:
     m_largest_cost = (std::max)(m_largest_cost, plan.cost);
     ++m_collapses;
     const Vertex s = collapse(plan.edge, plan.position);
+    if(plan.t_cluster) { // then the mirror edge, from the vertex kept to the other off-plane end
+      const Edge second = m_mesh.edge(CGAL::halfedge(s, plan.far_end, m_mesh).first);
+      if(!CGAL::Euler::does_satisfy_link_condition(second, m_mesh)) // plan_t_cluster() rules it out
+        throw std::logic_error("symmetric decimation: a T cluster's second collapse became invalid");
+      const Vertex t = collapse(second, plan.position);
+      ++m_t_clusters;
+      m_mirror[t] = t;
+      update_around(t);
+      return;
+    }
     if(!plan.paired) {
       m_mirror[s] = s;
       update_around(s);
@@ -330,7 +381,7 @@ private:
     Plan plan;
     if(!plan_cluster(e, plan))
       return;
-    if(plan.paired && plan.mirror_edge.idx() < e.idx()) {
+    if((plan.paired || plan.t_cluster) && plan.mirror_edge.idx() < e.idx()) {
       ++m_stamp[plan.mirror_edge];
       m_queue.push(Entry{rank(plan.cost), std::uint32_t(plan.mirror_edge.idx()), m_stamp[plan.mirror_edge]});
       return;
@@ -343,7 +394,7 @@ private:
   Mesh::Property_map<Vertex, Quadric> m_quadric;
   Mesh::Property_map<Edge, std::uint32_t> m_stamp;
   std::priority_queue<Entry> m_queue;
-  std::size_t m_collapses = 0;
+  std::size_t m_collapses = 0, m_t_clusters = 0;
   double m_largest_cost = 0;
   double m_cost_quantum = 1;
   bool m_mirrored_positions = true;
