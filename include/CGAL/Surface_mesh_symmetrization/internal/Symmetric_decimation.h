@@ -15,8 +15,8 @@
 //   mirror vertex in the other edge's stars); both collapse, to mirrored positions on a's side;
 // - a self-mirrored edge: (a, b) on the plane, or (a, a') across it; it collapses onto the plane;
 // - a T: edge (p, b) from a vertex p on the plane and its mirror (p, b'); both collapse into p,
-//   which stays on the plane (b and b' not adjacent, and their other common neighbours
-//   neighbours of p, so that the second collapse remains possible after the first).
+//   which stays on the plane (b and b' not adjacent, their other common neighbours neighbours of
+//   p, and b' of degree 4 at least, so that the second collapse remains possible after the first).
 // Edges without a mirror edge, and edges at a border, are never collapsed: the mesh keeps the
 // symmetric connectivity it has. Its priority is the Garland-Heckbert error of its worst edge
 // (plane quadrics of the incident faces, unit normals), the placement the quadric's optimum
@@ -295,15 +295,17 @@ private:
 
   // The cluster of the edge of h from a vertex on the plane to one off it, with its mirror edge
   // (a T): both collapse into the vertex on the plane, which stays on it. The second collapse
-  // must remain possible after the first: the two off-plane ends are not adjacent, and their
-  // other common neighbours are neighbours of the plane vertex.
+  // must remain possible after the first (the link condition): the two off-plane ends are not
+  // adjacent, their other common neighbours are neighbours of the plane vertex (then the second
+  // edge's only common neighbours are its two apices), and they are not of degree 3 (then the
+  // second edge is not in a tetrahedron, a small closed component).
   bool plan_t_cluster(Halfedge h, const Quadric& q, Plan& plan) const
   {
     const Vertex p = m_mirror[m_mesh.source(h)] == m_mesh.source(h) ? m_mesh.source(h) : m_mesh.target(h);
     const Vertex o = p == m_mesh.source(h) ? m_mesh.target(h) : m_mesh.source(h), mo = m_mirror[o];
     const auto mh = CGAL::halfedge(p, mo, m_mesh);
-    if(!mh.second || mo == o || on_border(mo) || m_mesh.number_of_vertices() < 6)
-      return false; // (two vertices go: at least a tetrahedron is left)
+    if(!mh.second || mo == o || on_border(mo) || m_mesh.degree(mo) < 4)
+      return false; // (of degree 3, b' could end in a tetrahedron after the first collapse)
     for(Vertex w : CGAL::vertices_around_target(m_mesh.halfedge(o), m_mesh)) {
       if(w == mo)
         return false;
