@@ -88,7 +88,7 @@ What `symmetric_decimation()` did.
 struct Symmetric_decimation_result
 {
   std::size_t faces_before = 0, faces = 0; ///< the number of faces before and after
-  std::size_t collapses = 0;               ///< clusters collapsed (an edge with its mirror edge, or one edge on the plane)
+  std::size_t collapses = 0;               ///< clusters collapsed (an edge with its mirror edge, one edge on the plane, or the two edges of a vertex on the plane to a pair)
   /// the largest error of a collapse, relative to the bounding box diagonal (see `maximum_error`)
   double largest_error = 0;
   Symmetric_connectivity before, after; ///< the symmetric connectivity of the input and of the result
@@ -231,9 +231,11 @@ Symmetric_connectivity measure_symmetric_connectivity(const TriangleMesh& tm, co
 
 Decimates `tm` by edge collapses that keep its symmetric connectivity across the plane of
 `symmetry` (thesis section 2.5): an edge and its mirror edge collapse together, to mirrored
-positions, and an edge that is its own mirror image (on the plane, or across it between partners)
-collapses onto the plane. The collapses follow the Garland-Heckbert error (the sum of the squared
-distances to the planes of the faces merged, the worst of the two edges of a pair), each placed
+positions; an edge that is its own mirror image (on the plane, or across it between partners)
+collapses onto the plane; an edge from a vertex on the plane to one off it collapses with its
+mirror edge into the vertex on the plane, which stays on the plane. The collapses follow the
+Garland-Heckbert error (the sum of the squared distances to the planes of the faces merged, the
+worst of the two edges of a pair), each placed
 at its quadric's optimum, cheapest first, while a collapse keeps the link condition, folds no face
 and makes none degenerate. Vertices are paired as `measure_symmetric_connectivity()` does, then
 moved to exact mirror positions (by at most `pairing_tolerance` of the mean edge length) so that
