@@ -113,6 +113,50 @@ TEST(SymmetricDecimation, EveryCollapseKeepsTheConnectivitySymmetric)
   EXPECT_GT(d.t_clusters(), 0u) << "edges from the plane collapsed with their mirrors";
 }
 
+// Given quadrics (the symmetric simplification's: positions not mirrored) whose optima lie a mean
+// edge length and a half aside: once other positions are allowed (ends and midpoints where the
+// optimum folds a face), the decimation still reaches its target with every edge mirrored and a
+// valid closed mesh; with mirrored positions there is nothing to allow.
+TEST(SymmetricDecimation, OtherPositionsKeepTheConnectivitySymmetric)
+{
+  const Mesh m = blob(16, 24);
+  SYI::Surface s = surface_of(m);
+  const SYI::Plane_frame frame(SYI::Plane_3d{Vector_3d(0, 1, 0), 0}, s.area_centroid());
+  std::vector<char> used(s.points.size(), 1);
+  for(Vector_3d& p : s.points)
+    p = frame.to_frame(p);
+  const std::vector<std::uint32_t> partner = SYI::pair_vertices(s.points, used, 0.01);
+  SYI::make_pairs_exact(s.points, partner);
+  const double shift = 1.5 * SYI::mean_edge_length(s);
+  std::vector<SYI::Symmetric_decimator::Quadric> given;
+  for(const Vector_3d& p : s.points) {
+    SYI::Symmetric_decimator::Quadric q = SYI::Symmetric_decimator::Quadric::Zero();
+    const Vector_3d o = p + Vector_3d(0, 0, shift);
+    for(const Vector_3d& n : {Vector_3d(1, 0, 0), Vector_3d(0, 1, 0), Vector_3d(0, 0, 1)}) {
+      const Eigen::Vector4d r(n.x, n.y, n.z, -SAI::dot(n, o));
+      q += r * r.transpose();
+    }
+    given.push_back(q);
+  }
+  const std::size_t target = s.triangles.size() / 10;
+  SYI::Symmetric_decimator d(s, partner, false, &given);
+  EXPECT_TRUE(d.allow_other_positions());
+  EXPECT_FALSE(d.allow_other_positions()) << "once";
+  while(d.number_of_faces() > target && d.step()) {
+  }
+  EXPECT_LE(d.number_of_faces(), target);
+  EXPECT_GE(d.number_of_faces(), target - 4);
+  SYI::Surface out;
+  std::vector<std::uint32_t> p;
+  d.export_surface(out, p);
+  const SYI::Connectivity_counts c = SYI::count_symmetric_connectivity(out, p);
+  EXPECT_EQ(c.symmetric_edges, c.edges);
+  EXPECT_EQ(c.paired_vertices, c.vertices);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(d.mesh()) && CGAL::is_closed(d.mesh()));
+  SYI::Symmetric_decimator mirrored(s, partner);
+  EXPECT_FALSE(mirrored.allow_other_positions());
+}
+
 TEST(SymmetricDecimation, FifthOfTheFacesStaysSymmetricAndClose)
 {
   const Mesh input = blob(40, 64);

@@ -394,7 +394,7 @@ Symmetric_simplification_result symmetric_simplification(TriangleMesh& tm, const
     const std::vector<internal::Symmetric_decimator::Quadric> quadrics =
       internal::provenance_quadrics(out, input.surface);
     internal::Symmetric_decimator decimator(out, partner, false, &quadrics);
-    while(decimator.number_of_faces() > faces && decimator.step()) {
+    while(decimator.number_of_faces() > faces && (decimator.step() || decimator.allow_other_positions())) {
     }
     decimator.export_surface(out, partner);
     r.remeshing.faces = out.triangles.size();
