@@ -235,7 +235,8 @@ positions; an edge that is its own mirror image (on the plane, or across it betw
 collapses onto the plane; an edge from a vertex on the plane to one off it collapses with its
 mirror edge into the vertex on the plane, which stays on the plane. The collapses follow the
 Garland-Heckbert error (the sum of the squared distances to the planes of the faces merged, the
-worst of the two edges of a pair), each placed
+worst of the two edges of a pair, that of the three vertices merged for the two edges from the
+plane), each placed
 at its quadric's optimum, cheapest first, while a collapse keeps the link condition, folds no face
 and makes none degenerate. Vertices are paired as `measure_symmetric_connectivity()` does, then
 moved to exact mirror positions (by at most `pairing_tolerance` of the mean edge length) so that

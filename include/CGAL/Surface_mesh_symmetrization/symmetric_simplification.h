@@ -237,6 +237,8 @@ inline std::vector<Symmetric_decimator::Quadric> provenance_quadrics(const Surfa
     Surface_point p = index.closest_compatible((c[0] + c[1] + c[2]) / 3.0, s.area_vector(f), 0.0, hint);
     if(!p.found)
       p = index.closest((c[0] + c[1] + c[2]) / 3.0, hint);
+    if(!p.found)
+      continue; // (an input without a face of nonzero area)
     hint = p.face;
     for(std::uint32_t v : s.triangles[f])
       if(std::find(planes[v].begin(), planes[v].end(), p.face) == planes[v].end())
@@ -277,8 +279,9 @@ then keeps the vertex pairs of the symmetric connectivity but places each merged
 optimum of its own quadric, so that the result follows the input's surface again. Those quadrics
 are the input's: each vertex starts with the planes of the input faces that its faces lie on
 (each face of the restored mesh mapped to the input face nearest to its centroid, each plane once
-per vertex), so an original vertex starts with the quadric Garland and Heckbert give it and a
-point the remeshing inserted inside a face with that face's plane alone.
+per vertex), so that, where the restored mesh follows the input, an original vertex starts with
+the quadric Garland and Heckbert give it and a point the remeshing inserted inside a face with that
+face's plane alone.
 
 \tparam TriangleMesh a model of `MutableFaceGraph` and `FaceListGraph`
 \tparam Kernel the kernel of the symmetry

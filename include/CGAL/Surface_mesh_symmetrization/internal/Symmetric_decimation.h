@@ -14,16 +14,19 @@
 // - a pair: edge (a, b) and its mirror (a', b'), four vertices off the plane and apart (neither
 //   mirror vertex in the other edge's stars); both collapse, to mirrored positions on a's side;
 // - a self-mirrored edge: (a, b) on the plane, or (a, a') across it; it collapses onto the plane;
-// - a T: edge (p, b) from a vertex p on the plane and its mirror (p, b'); both collapse into p,
-//   which stays on the plane (b and b' not adjacent, their other common neighbours neighbours of
-//   p, and b' of degree 4 at least, so that the second collapse remains possible after the first).
+// - a T: edge (p, b) from a vertex p on the plane and its mirror (p, b'); both collapse into p
+//   (b and b' not adjacent, their other common neighbours neighbours of p, both of degree 4 at
+//   least, so that the second collapse remains possible after the first).
 // Edges without a mirror edge, and edges at a border, are never collapsed: the mesh keeps the
-// symmetric connectivity it has. Its priority is the Garland-Heckbert error of its worst edge
-// (plane quadrics of the incident faces, unit normals), the placement the quadric's optimum
-// (with x = 0 for a self-mirrored edge or a T), else the best of the ends and the midpoint.
+// symmetric connectivity it has. A cluster's priority is the Garland-Heckbert error (plane
+// quadrics of the incident faces, unit normals) of its worst edge, of the three vertices' quadric
+// for a T; the placement the quadric's optimum (with x = 0 for a self-mirrored edge or a T), else
+// the best of the edge's ends and midpoint.
 // Without mirrored positions (the symmetric simplification: a symmetric connectivity on the
-// positions of an asymmetric surface), each merged vertex goes to its own quadric's optimum, and
-// the quadrics are given (the planes of the input's faces under each vertex's faces).
+// positions of an asymmetric surface), each merged vertex goes to its own quadric's optimum (a
+// T's too, off the plane), and the quadrics are given (the planes of the input's faces under
+// each vertex's faces); once allow_other_positions(), the ends and midpoint of a cluster's edge
+// are tried where that optimum folds a face.
 
 #include <CGAL/Surface_mesh_symmetrization/internal/Symmetric_connectivity.h>
 
@@ -344,7 +347,8 @@ private:
   }
 
   // The cluster of the edge of h from a vertex on the plane to one off it, with its mirror edge
-  // (a T): both collapse into the vertex on the plane, which stays on it. The second collapse
+  // (a T): both collapse into the vertex on the plane (which stays on it with mirrored
+  // positions). The second collapse
   // must remain possible after the first (the link condition): the two off-plane ends are not
   // adjacent, their other common neighbours are neighbours of the plane vertex (then the second
   // edge's only common neighbours are its two apices), and they are not of degree 3 (then the
@@ -354,8 +358,9 @@ private:
     const Vertex p = m_mirror[m_mesh.source(h)] == m_mesh.source(h) ? m_mesh.source(h) : m_mesh.target(h);
     const Vertex o = p == m_mesh.source(h) ? m_mesh.target(h) : m_mesh.source(h), mo = m_mirror[o];
     const auto mh = CGAL::halfedge(p, mo, m_mesh);
-    if(!mh.second || mo == o || on_border(mo) || m_mesh.degree(mo) < 4)
-      return false; // (of degree 3, b' could end in a tetrahedron after the first collapse)
+    if(!mh.second || mo == o || on_border(mo) || m_mesh.degree(mo) < 4 || m_mesh.degree(o) < 4)
+      return false; // (of degree 3, b' could end in a tetrahedron after the first collapse; both
+                    // ends checked, so that either edge of the T plans it alike)
     for(Vertex w : CGAL::vertices_around_target(m_mesh.halfedge(o), m_mesh)) {
       if(w == mo)
         return false;
@@ -435,8 +440,12 @@ private:
     if(!plan_cluster(e, plan))
       return;
     if((plan.paired || plan.t_cluster) && plan.mirror_edge.idx() < e.idx()) {
-      ++m_stamp[plan.mirror_edge];
-      m_queue.push(Entry{rank(plan.cost), std::uint32_t(plan.mirror_edge.idx()), m_stamp[plan.mirror_edge]});
+      const Edge m = plan.mirror_edge;
+      ++m_stamp[m];
+      // A T is planned from the edge it is queued under (its positions are tried along that edge).
+      if(plan.t_cluster && !plan_cluster(m, plan))
+        return;
+      m_queue.push(Entry{rank(plan.cost), std::uint32_t(m.idx()), m_stamp[m]});
       return;
     }
     m_queue.push(Entry{rank(plan.cost), std::uint32_t(e.idx()), m_stamp[e]});
