@@ -82,16 +82,23 @@ TEST(SymmetricConnectivity, ProceduralShapeIsSymmetricAndAWarpIsNot)
   EXPECT_LT(SY::measure_symmetric_connectivity(warped, y_reflection).paired_vertices, 0.5);
 }
 
-TEST(SymmetricDecimation, EveryCollapseKeepsTheConnectivitySymmetric)
+// A blob in the frame of its plane (y = 0 becomes x = 0), pairs exactly mirrored: its partners.
+std::vector<std::uint32_t> framed_blob(std::size_t rings, std::size_t sectors, SYI::Surface& s)
 {
-  const Mesh m = blob(8, 12);
-  SYI::Surface s = surface_of(m);
+  s = surface_of(blob(rings, sectors));
   const SYI::Plane_frame frame(SYI::Plane_3d{Vector_3d(0, 1, 0), 0}, s.area_centroid());
   std::vector<char> used(s.points.size(), 1);
   for(Vector_3d& p : s.points)
     p = frame.to_frame(p);
   const std::vector<std::uint32_t> partner = SYI::pair_vertices(s.points, used, 0.01);
   SYI::make_pairs_exact(s.points, partner);
+  return partner;
+}
+
+TEST(SymmetricDecimation, EveryCollapseKeepsTheConnectivitySymmetric)
+{
+  SYI::Surface s;
+  const std::vector<std::uint32_t> partner = framed_blob(8, 12, s);
   SYI::Symmetric_decimator d(s, partner);
   std::size_t steps = 0;
   while(d.step()) { // down to the smallest mesh it can reach
@@ -119,23 +126,14 @@ TEST(SymmetricDecimation, EveryCollapseKeepsTheConnectivitySymmetric)
 // valid closed mesh; with mirrored positions there is nothing to allow.
 TEST(SymmetricDecimation, OtherPositionsKeepTheConnectivitySymmetric)
 {
-  const Mesh m = blob(16, 24);
-  SYI::Surface s = surface_of(m);
-  const SYI::Plane_frame frame(SYI::Plane_3d{Vector_3d(0, 1, 0), 0}, s.area_centroid());
-  std::vector<char> used(s.points.size(), 1);
-  for(Vector_3d& p : s.points)
-    p = frame.to_frame(p);
-  const std::vector<std::uint32_t> partner = SYI::pair_vertices(s.points, used, 0.01);
-  SYI::make_pairs_exact(s.points, partner);
+  SYI::Surface s;
+  const std::vector<std::uint32_t> partner = framed_blob(16, 24, s);
   const double shift = 1.5 * SYI::mean_edge_length(s);
   std::vector<SYI::Symmetric_decimator::Quadric> given;
   for(const Vector_3d& p : s.points) {
     SYI::Symmetric_decimator::Quadric q = SYI::Symmetric_decimator::Quadric::Zero();
-    const Vector_3d o = p + Vector_3d(0, 0, shift);
-    for(const Vector_3d& n : {Vector_3d(1, 0, 0), Vector_3d(0, 1, 0), Vector_3d(0, 0, 1)}) {
-      const Eigen::Vector4d r(n.x, n.y, n.z, -SAI::dot(n, o));
-      q += r * r.transpose();
-    }
+    for(const Vector_3d& n : {Vector_3d(1, 0, 0), Vector_3d(0, 1, 0), Vector_3d(0, 0, 1)})
+      q += SYI::Symmetric_decimator::plane_quadric(n, p + Vector_3d(0, 0, shift));
     given.push_back(q);
   }
   const std::size_t target = s.triangles.size() / 10;

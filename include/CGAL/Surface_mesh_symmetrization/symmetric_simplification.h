@@ -252,9 +252,7 @@ inline std::vector<Symmetric_decimator::Quadric> provenance_quadrics(const Surfa
       const double l = a.length();
       if(!(l > 0))
         continue;
-      const Vector_3d n = a / l;
-      const Eigen::Vector4d r(n.x, n.y, n.z, -SAI::dot(n, c[0]));
-      q[v] += r * r.transpose();
+      q[v] += Symmetric_decimator::plane_quadric(a / l, c[0]);
     }
   return q;
 }

@@ -98,6 +98,13 @@ public:
       push(e);
   }
 
+  // The quadric of the plane through p with unit normal n (the squared distance to it).
+  static Quadric plane_quadric(const Vector_3d& n, const Vector_3d& p)
+  {
+    const Eigen::Vector4d r(n.x, n.y, n.z, -SAI::dot(n, p));
+    return r * r.transpose();
+  }
+
   const Mesh& mesh() const { return m_mesh; }
   Vertex mirror(Vertex v) const { return m_mirror[v]; }
   std::size_t number_of_faces() const { return m_mesh.number_of_faces(); }
