@@ -37,17 +37,15 @@ and REPO/build its build directory, with:
     /usr/bin/python3 $REPO/doc/render_mesh_figure.py input.off:plain:"input (5,804 faces)" \\
         symmetrized.off:plain:"symmetrized (5,804 faces)" \\
         remeshed.off:mirror:"remeshed (5,804 faces)" \\
-        fifth.off:mirror=fifth.json:"decimated to a fifth (1,160 faces)" \\
+        fifth.off:mirror:"decimated to a fifth (1,160 faces)" \\
         --plane remeshed.json --azimuth 90 --elevation 60 \\
         --output $REPO/doc/Surface_mesh_symmetrization/fig/symmetric_remeshing.png
 
 The cow's length runs along x, its head towards +x, its up axis is y and its mirror plane is
 z = 0: the view from behind and above (azimuth 90, elevation 60) sees the plane edge-on, as the
 vertical line through the middle of every panel. `symmetry decimate` detects the plane of
-remeshed.off again and decimates symmetrically about that plane: fifth.off is mirror-symmetric
-about the plane of fifth.json, whose normal differs from the one of remeshed.json by 2e-5 radians,
-enough for its reflected vertices to miss their matches by up to 2e-5 of the diagonal about the
-latter (and every face to be red); hence its own plane.
+remeshed.off again: its vertices are exact mirror pairs, so the detected plane is fitted to them
+and equals the plane of remeshed.json to rounding (fifth.json has it too).
 """
 
 import argparse

@@ -176,6 +176,22 @@ TEST(Detection, ExactlySymmetricMeshGivesAPerfectScore)
   EXPECT_NEAR(q.y(), -p.y(), 1e-3);
 }
 
+TEST(Detection, ExactlyMirroredVerticesGiveThePlaneToRoundingError)
+{
+  // Every vertex has an exact mirror vertex (a remeshed mesh): the plane is fitted to the pairs,
+  // so that the mesh is found exactly symmetric again (the samples alone are 1e-5 rad off).
+  Mesh m = to_mesh(SAS::symmetric_blob(24, 48));
+  const SAS::Rigid_transform t = motion(2);
+  move(m, t);
+  const std::vector<Symmetry> s = detect(m, 1);
+  ASSERT_FALSE(s.empty());
+  const auto p = plane_of(s.front());
+  const Vector_3d n = Vector_3d(t.rotation[0].y, t.rotation[1].y, t.rotation[2].y);
+  EXPECT_LT(SAI::cross(p.first, n).length(), 1e-10); // the sine of the angle
+  EXPECT_LT(std::abs(std::abs(p.second) - std::abs(SAI::dot(p.first, t.translation))),
+            1e-10 * surface_of(m).diagonal());
+}
+
 TEST(Detection, DoesNotDependOnTheThreadCount)
 {
   const Mesh m = read_data_mesh("cow.off");

@@ -56,7 +56,11 @@ Detects the planar reflective symmetries of a triangle mesh, global and partial,
    bounding-volume hierarchy of the faces); Gauss-Newton steps on the plane's normal and offset minimize the robustly
    weighted (Tukey) distances of the reflected samples to the tangent planes of their partners,
    with a reach that shrinks from 15% to 2% of the diagonal. All candidates are first refined on
-   300 samples; the best distinct ones continue on every sample.
+   300 samples; the best distinct ones continue on every sample. When at least 90% of the mesh's
+   vertices then have a mirror vertex (the nearest vertex to their reflection, mutually, within a
+   tenth of the mean edge length), the plane is also fitted to those pairs (normal along their
+   differences, through their midpoints), and that plane is kept if it scores no worse: a mesh
+   whose vertices are exact mirror images (a remeshed one) gets its plane to rounding error.
 4. The refined planes are scored (see `Symmetry::score`), planes closer than 2 degrees and 1% of
    the diagonal are merged, and the support of each plane is computed (see
    `Symmetry::support`). Planes whose support fraction is below `minimum_support` are dropped.

@@ -13,12 +13,16 @@
 //   2. every candidate refined to minimize the symmetry distance: reflected samples paired with
 //      the closest compatible surface points, robust (Tukey) weights with a shrinking reach,
 //      Gauss-Newton steps on the plane's normal and offset (point to plane);
+//   2b. a plane under which nearly all vertices have a mirror vertex is fitted to those pairs
+//      (exact for a mesh whose vertices are exact mirror images: a remeshed one), kept when its
+//      score is not worse;
 //   3. the refined planes scored by the truncated RMS symmetry distance, duplicates merged,
 //      ranked best first, and the support of each (per face: how closely the mirror image of the
 //      face lies on the surface).
 
 #include <CGAL/Surface_mesh_symmetrization/Detect_reflective_symmetries_options.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Surface_index.h>
+#include <CGAL/Surface_mesh_symmetrization/internal/Symmetric_connectivity.h>
 
 #include <algorithm>
 #include <array>
@@ -284,6 +288,55 @@ public:
     return canonical(plane);
   }
 
+  // The plane fitted to the vertices' mirror pairs under `plane` (pair_vertices(), a tenth of
+  // the mean edge length): the sum of the pairs' differences, oriented along the normal, gives
+  // the normal, the mean of the pairs' midpoints the offset; twice, pairing again. False, and
+  // `plane` unchanged, when fewer than 90% of the vertices have a partner.
+  bool fit_to_vertex_pairs(Plane_3d& plane) const
+  {
+    const std::vector<Vector_3d>& p = m_surface.points;
+    std::vector<char> used(p.size(), 0);
+    std::size_t n_used = 0;
+    for(const auto& t : m_surface.triangles)
+      for(std::uint32_t v : t)
+        if(!used[v]) {
+          used[v] = 1;
+          ++n_used;
+        }
+    const double tolerance = 0.1 * mean_edge_length(m_surface);
+    if(!(tolerance > 0))
+      return false;
+    Plane_3d fitted = plane;
+    for(int round = 0; round < 2; ++round) {
+      const Plane_frame frame(fitted, Vector_3d(0, 0, 0));
+      std::vector<Vector_3d> q(p.size());
+      for(std::size_t i = 0; i < p.size(); ++i)
+        q[i] = frame.to_frame(p[i]);
+      const std::vector<std::uint32_t> partner = pair_vertices(q, used, tolerance);
+      std::size_t paired = 0;
+      Vector_3d direction(0, 0, 0);
+      for(std::size_t i = 0; i < p.size(); ++i) {
+        if(partner[i] == no_partner)
+          continue;
+        ++paired;
+        if(partner[i] > i) {
+          const Vector_3d d = p[i] - p[partner[i]];
+          direction += SAI::dot(d, fitted.normal) < 0 ? d * -1.0 : d;
+        }
+      }
+      if(double(paired) < 0.9 * double(n_used) || !(direction.squared_length() > 0))
+        return false;
+      const Vector_3d n = direction / direction.length();
+      double sum = 0;
+      for(std::size_t i = 0; i < p.size(); ++i)
+        if(partner[i] != no_partner)
+          sum += SAI::dot(n, (p[i] + p[partner[i]]) * 0.5);
+      fitted = canonical(Plane_3d{n, sum / double(paired)});
+    }
+    plane = fitted;
+    return true;
+  }
+
   // The truncated RMS symmetry distance of the reflection across `plane`, relative to the
   // diagonal, over the first `n_samples` samples (all when 0).
   double score(const Plane_3d& plane, std::size_t n_samples = 0) const
@@ -513,6 +566,14 @@ inline std::vector<Detected_plane> detect_planes(const Surface& input, const Det
     Detected_plane& d = refined[i];
     d.plane = detector.refine(coarse[kept[i]].first, 0, 20, 0.05, 0.02);
     d.score = detector.score(d.plane);
+    Plane_3d fitted = d.plane;
+    if(detector.fit_to_vertex_pairs(fitted)) {
+      const double fitted_score = detector.score(fitted);
+      if(fitted_score <= d.score) {
+        d.plane = fitted;
+        d.score = fitted_score;
+      }
+    }
     d.votes = candidates[kept[i]].second;
   });
   std::stable_sort(refined.begin(), refined.end(),
