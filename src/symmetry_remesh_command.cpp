@@ -184,6 +184,7 @@ int run_decimate(const Remesh_options& o)
     report["symmetry_error_after"] = r.symmetry_error_after;
     report["mirror_points"] = r.remeshing.mirror_points;
     report["copied_faces"] = r.remeshing.copied_faces;
+    report["restore_flips"] = r.restore_flips;
   }
   const double seconds = watch.seconds();
   report["remeshed"] = !direct;

@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh_symmetrization/symmetric_simplification.h>
 #include <CGAL/Surface_mesh_symmetrization/symmetrize.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Surface_index.h>
+#include <CGAL/Surface_mesh_symmetrization/internal/Symmetric_flips.h>
 #include <CGAL/Shape_analysis/internal/Point_tree.h>
 #include <Shape_analysis_support/Mesh_distance.h>
 #include <Shape_analysis_support/Procedural_shapes.h>
@@ -336,6 +337,64 @@ TEST(SymmetricSimplification, RefinementFollowsTheInputAndStaysMirrored)
   std::vector<std::uint32_t> p2(c.mirror_vertex.begin(), c.mirror_vertex.end());
   EXPECT_EQ(SYI::refine_restored(s2, r2, p2, index, symmetrized, residuals, 0.002 * diagonal, faces, 3), 0u);
   EXPECT_EQ(s2.triangles.size(), faces);
+}
+
+// The flips after the restore's decimation: a square pyramid (mirror plane x = 0) meshed on a
+// grid whose squares across the pyramid's edges take the diagonal that cuts them, mirrored,
+// comes out on the pyramid (the reference surface) with its connectivity still mirrored.
+TEST(SymmetricSimplification, MirroredFlipsFollowTheReferenceCreases)
+{
+  const int n = 3; // the grid from -n to n
+  SYI::Surface wrong, right;
+  for(int j = -n; j <= n; ++j)
+    for(int i = -n; i <= n; ++i)
+      wrong.points.emplace_back(i, j, 1.0 - 0.5 * (std::max)(std::abs(i), std::abs(j)));
+  const auto id = [&](int i, int j) { return std::uint32_t((j + n) * (2 * n + 1) + (i + n)); };
+  for(SYI::Surface* s : {&wrong, &right}) {
+    s->points = wrong.points;
+    s->triangles.clear();
+    for(int j = -n; j < n; ++j)
+      for(int i = 0; i < n; ++i) { // the right half, then its mirror image
+        // The diagonal from (i, j) to (i + 1, j + 1) (rising), or from (i + 1, j) to (i, j + 1):
+        // the pyramid's edge y = x rises across square (i, i), y = -x falls across (i, -i - 1).
+        const bool crease = j == i || j == -i - 1;
+        const bool use_rising = !crease || ((j == i) == (s == &right));
+        std::vector<std::array<int, 6>> half; // corners (i, j) of two triangles, counterclockwise
+        if(use_rising)
+          half = {{{i, j, i + 1, j, i + 1, j + 1}}, {{i, j, i + 1, j + 1, i, j + 1}}};
+        else
+          half = {{{i, j, i + 1, j, i, j + 1}}, {{i + 1, j, i + 1, j + 1, i, j + 1}}};
+        for(const auto& t : half) {
+          s->triangles.push_back({{id(t[0], t[1]), id(t[2], t[3]), id(t[4], t[5])}});
+          s->triangles.push_back({{id(-t[0], t[1]), id(-t[4], t[5]), id(-t[2], t[3])}}); // mirrored
+        }
+      }
+  }
+  const std::vector<char> used(wrong.points.size(), 1);
+  const std::vector<std::uint32_t> partner = SYI::pair_vertices(wrong.points, used, 0.1);
+  const SYI::Surface_index reference(right);
+  const auto deviation = [&](const SYI::Surface& s) {
+    double largest = 0;
+    std::uint32_t hint = SYI::Surface_index::no_face;
+    for(std::size_t f = 0; f < s.triangles.size(); ++f) {
+      const auto c = s.corners(f);
+      largest = (std::max)(largest, std::sqrt(reference.closest((c[0] + c[1] + c[2]) / 3.0, hint).squared_distance));
+    }
+    return largest;
+  };
+  ASSERT_GT(deviation(wrong), 0.05);
+  ASSERT_EQ(SYI::count_symmetric_connectivity(wrong, partner).symmetric_edges,
+            SYI::count_symmetric_connectivity(wrong, partner).edges);
+  SYI::Symmetric_flipper flipper(wrong, partner, reference);
+  const std::size_t flips = flipper.flip(0.8, 1e-9, 10);
+  SYI::Surface flipped;
+  flipper.export_surface(flipped);
+  EXPECT_EQ(flips, std::size_t(4 * n)); // the squares across the pyramid's four edges
+  EXPECT_LT(deviation(flipped), 1e-12);
+  const SYI::Connectivity_counts c = SYI::count_symmetric_connectivity(flipped, partner);
+  EXPECT_EQ(c.symmetric_edges, c.edges);
+  EXPECT_EQ(c.symmetric_faces, c.faces);
+  EXPECT_EQ(flipper.flip(0.8, 1e-9, 10), 0u); // nothing left to gain
 }
 
 TEST(SymmetricSimplification, BadFaceCountsAreRefused)
