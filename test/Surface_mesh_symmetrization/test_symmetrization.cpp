@@ -150,8 +150,8 @@ TEST(Detection, ProceduralShapeInRandomPosesGivesItsPlaneWithinHalfADegree)
     // The image of the plane y = 0: normal R (0, 1, 0) through the image of the origin.
     const Vector_3d n = Vector_3d(t.rotation[0].y, t.rotation[1].y, t.rotation[2].y);
     EXPECT_LT(angle_degrees(p.first, n), 0.5) << "pose " << k;
-    const double offset = SAI::dot(p.first, t.translation);
-    EXPECT_LT(std::abs(std::abs(p.second) - std::abs(offset)), 0.005 * surface_of(m).diagonal());
+    const double offset = SAI::dot(p.first, t.translation); // through the image of the origin
+    EXPECT_LT(std::abs(p.second - offset), 0.005 * surface_of(m).diagonal());
     EXPECT_LT(s.front().score, 0.002);
     EXPECT_GT(s.front().support_fraction, 0.95);
     EXPECT_EQ(s.front().support.size(), num_faces(m));
@@ -188,8 +188,7 @@ TEST(Detection, ExactlyMirroredVerticesGiveThePlaneToRoundingError)
   const auto p = plane_of(s.front());
   const Vector_3d n = Vector_3d(t.rotation[0].y, t.rotation[1].y, t.rotation[2].y);
   EXPECT_LT(SAI::cross(p.first, n).length(), 1e-10); // the sine of the angle
-  EXPECT_LT(std::abs(std::abs(p.second) - std::abs(SAI::dot(p.first, t.translation))),
-            1e-10 * surface_of(m).diagonal());
+  EXPECT_LT(std::abs(p.second - SAI::dot(p.first, t.translation)), 1e-10 * surface_of(m).diagonal());
 }
 
 TEST(Detection, DoesNotDependOnTheThreadCount)

@@ -319,9 +319,11 @@ public:
         if(partner[i] == no_partner)
           continue;
         ++paired;
-        if(partner[i] > i) {
+        if(partner[i] > i) { // (a pair whose difference lies nearly in the plane has no clear sign)
           const Vector_3d d = p[i] - p[partner[i]];
-          direction += SAI::dot(d, fitted.normal) < 0 ? d * -1.0 : d;
+          const double along = SAI::dot(d, fitted.normal);
+          if(std::abs(along) >= 0.5 * d.length())
+            direction += along < 0 ? d * -1.0 : d;
         }
       }
       if(double(paired) < 0.9 * double(n_used) || !(direction.squared_length() > 0))

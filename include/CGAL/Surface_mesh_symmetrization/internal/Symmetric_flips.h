@@ -50,19 +50,26 @@ public:
     for(const Vector_3d& p : s.points)
       vertex.push_back(m_mesh.add_vertex(Point(p.x, p.y, p.z)));
     for(const auto& t : s.triangles)
-      m_mesh.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]);
+      m_valid = m_valid && m_mesh.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]) != Mesh::null_face();
     for(std::size_t i = 0; i < s.points.size(); ++i)
       if(partner[i] != no_partner)
         m_mirror[vertex[i]] = vertex[partner[i]];
   }
 
+  // Whether the surface was read whole (a closed manifold): flip() and export_surface() do nothing
+  // otherwise.
+  bool valid() const { return m_valid; }
+
   // Flips, by rounds of the best gains first, the mirror pairs of edges whose quads' faces come
-  // closer to the reference by at least `gain` (the largest distance of their sample points shrinks
-  // to that fraction or less) and away from it by more than `floor`; at most `rounds` rounds.
+  // closer to the reference by at least `gain` (the largest distance of their sample points, over
+  // both quads, shrinks to that fraction or less; neither quad's grows past `floor`) from farther
+  // than `floor`; at most `rounds` rounds.
   // Returns the number of edges flipped.
   std::size_t flip(double gain, double floor, int rounds)
   {
     std::size_t flips = 0;
+    if(!m_valid)
+      return flips;
     for(int round = 0; round < rounds; ++round) {
       std::vector<std::pair<double, std::uint32_t>> candidates; // (after / before, edge)
       for(Edge e : m_mesh.edges()) {
@@ -95,8 +102,11 @@ public:
     return flips;
   }
 
+  // The surface, flipped (unchanged when not valid()).
   void export_surface(Surface& s) const
   {
+    if(!m_valid)
+      return;
     s.points.clear();
     s.triangles.clear();
     for(Vertex v : m_mesh.vertices())
@@ -183,6 +193,9 @@ private:
       double mirror_before = 0, mirror_after = 0;
       if(!quad(g, mirror_before, mirror_after))
         return false;
+      // Neither side may get worse (the sides differ where the input is not symmetric).
+      if(after > (std::max)(before, floor) || mirror_after > (std::max)(mirror_before, floor))
+        return false;
       before = (std::max)(before, mirror_before);
       after = (std::max)(after, mirror_after);
     }
@@ -193,9 +206,10 @@ private:
   }
 
   const Surface_index& m_reference;
-  mutable std::uint32_t m_hint = Surface_index::no_face;
+  mutable std::uint32_t m_hint = Surface_index::no_face; // of the queries: not for concurrent use
   Mesh m_mesh;
   Mesh::Property_map<Vertex, Vertex> m_mirror;
+  bool m_valid = true;
 };
 
 } // namespace internal
