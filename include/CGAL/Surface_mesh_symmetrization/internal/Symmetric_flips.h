@@ -56,14 +56,14 @@ public:
         m_mirror[vertex[i]] = vertex[partner[i]];
   }
 
-  // Whether the surface was read whole (a closed manifold): flip() and export_surface() do nothing
-  // otherwise.
+  // Whether every face of the surface could be added (a manifold surface): flip() and
+  // export_surface() do nothing otherwise.
   bool valid() const { return m_valid; }
 
   // Flips, by rounds of the best gains first, the mirror pairs of edges whose quads' faces come
   // closer to the reference by at least `gain` (the largest distance of their sample points, over
-  // both quads, shrinks to that fraction or less; neither quad's grows past `floor`) from farther
-  // than `floor`; at most `rounds` rounds.
+  // both quads, shrinks to that fraction or less, and neither quad's own grows beyond
+  // max(its own, `floor`)) from farther than `floor`; at most `rounds` rounds.
   // Returns the number of edges flipped.
   std::size_t flip(double gain, double floor, int rounds)
   {
