@@ -395,6 +395,30 @@ TEST(SymmetricSimplification, MirroredFlipsFollowTheReferenceCreases)
   EXPECT_EQ(c.symmetric_edges, c.edges);
   EXPECT_EQ(c.symmetric_faces, c.faces);
   EXPECT_EQ(flipper.flip(0.8, 1e-9, 10), 0u); // nothing left to gain
+
+  // Asymmetric positions (as the restore gives): the left half flattened to a tenth of its height,
+  // and the reference that flattened left half as it is meshed. A flip would bring the right quads
+  // onto the pyramid but move the left ones off the reference (by a tenth of what the right ones
+  // gain): no pair flips, and the surface is exported as it was.
+  SYI::Surface flat_left = wrong, reference_mesh = right;
+  for(std::size_t i = 0; i < flat_left.points.size(); ++i)
+    if(flat_left.points[i].x < 0)
+      flat_left.points[i].z *= 0.1;
+  reference_mesh.points = flat_left.points;
+  for(std::size_t f = 0; f < right.triangles.size(); ++f) // the left faces as the mesh has them
+    if(wrong.corners(f)[0].x + wrong.corners(f)[1].x + wrong.corners(f)[2].x < 0)
+      reference_mesh.triangles[f] = wrong.triangles[f];
+  const SYI::Surface_index asymmetric_reference(reference_mesh);
+  SYI::Symmetric_flipper keeper(flat_left, partner, asymmetric_reference);
+  EXPECT_EQ(keeper.flip(0.8, 1e-9, 10), 0u);
+  SYI::Surface kept;
+  keeper.export_surface(kept);
+  const auto rotated = [](std::vector<std::array<std::uint32_t, 3>> t) { // smallest corner first
+    for(auto& f : t)
+      std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+    return t;
+  };
+  EXPECT_EQ(rotated(kept.triangles), rotated(flat_left.triangles));
 }
 
 TEST(SymmetricSimplification, BadFaceCountsAreRefused)
