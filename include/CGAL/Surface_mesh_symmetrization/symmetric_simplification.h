@@ -237,15 +237,15 @@ constexpr double restore_flip_floor = 1e-5;
 constexpr int restore_flip_rounds = 10;
 
 // Per vertex of `s` (the restored meta-mesh), the quadric of the planes of the input faces its
-// faces lie on (each face mapped to the input face nearest to its centroid, turned its way), each
-// plane once. The faces' own planes are not used: the remeshing's slivers, restored, have noisy
-// normals, and a face split in k pieces would count k times. At a fifth of the faces, Hausdorff
+// faces lie on (each face mapped by `index`, the input's, to the input face nearest to its
+// centroid, turned its way), each plane once. The faces' own planes are not used: the remeshing's
+// slivers, restored, have noisy normals, and a face split in k pieces would count k times. At a fifth of the faces, Hausdorff
 // distance over CGAL's Garland-Heckbert, own planes plus each input face's plane at the nearest
 // vertex -> these (with the T clusters of the decimation): PSB mesh 1 1.70 -> 1.00, 6 1.52 ->
 // 1.18, 22 1.78 -> 1.24, 221 1.35 -> 1.04, 242 1.59 -> 1.22, the cow 0.84 -> 0.69.
-inline std::vector<Symmetric_decimator::Quadric> provenance_quadrics(const Surface& s, const Surface& input)
+inline std::vector<Symmetric_decimator::Quadric> provenance_quadrics(const Surface& s, const Surface& input,
+                                                                   const Surface_index& index)
 {
-  const Surface_index index(input);
   std::vector<std::vector<std::uint32_t>> planes(s.points.size());
   std::uint32_t hint = Surface_index::no_face;
   for(std::size_t f = 0; f < s.triangles.size(); ++f) {
@@ -412,14 +412,14 @@ Symmetric_simplification_result symmetric_simplification(TriangleMesh& tm, const
     internal::refine_restored(symmetric, out, partner, index, symmetrized, s.residuals,
                               internal::restore_tolerance * symmetrized.diagonal(),
                               internal::refinement_face_budget * out.triangles.size(), internal::refinement_rounds);
+    const internal::Surface_index input_index(input.surface);
     const std::vector<internal::Symmetric_decimator::Quadric> quadrics =
-      internal::provenance_quadrics(out, input.surface);
+      internal::provenance_quadrics(out, input.surface, input_index);
     internal::Symmetric_decimator decimator(out, partner, false, &quadrics);
     while(decimator.number_of_faces() > faces && (decimator.step() || decimator.allow_other_positions())) {
     }
     decimator.export_surface(out, partner);
     // The decimated mesh's diagonals turned towards the input's creases.
-    const internal::Surface_index input_index(input.surface);
     internal::Symmetric_flipper flipper(out, partner, input_index);
     r.restore_flips = flipper.flip(internal::restore_flip_gain, internal::restore_flip_floor * symmetrized.diagonal(),
                                    internal::restore_flip_rounds);
