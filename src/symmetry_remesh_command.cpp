@@ -185,6 +185,8 @@ int run_decimate(const Remesh_options& o)
     report["mirror_points"] = r.remeshing.mirror_points;
     report["copied_faces"] = r.remeshing.copied_faces;
     report["restore_flips"] = r.restore_flips;
+    if(o.restore)
+      report["copied_side"] = r.copied_side;
   }
   const double seconds = watch.seconds();
   report["remeshed"] = !direct;

@@ -56,6 +56,8 @@ run_tool(symmetry decimate "${MESH}" --faces 1160 --restore -q --output "${WORK}
 expect_report("${WORK}/restored.json" remeshed STREQUAL ON)
 expect_report("${WORK}/restored.json" restored STREQUAL ON)
 expect_report("${WORK}/restored.json" symmetric_edges GREATER 0.999)
+expect_report("${WORK}/restored.json" copied_side GREATER -2) # 1 or -1, the side copied
+expect_report("${WORK}/restored.json" copied_side LESS 2)
 
 set(bad "${WORK}/bad.off;${WORK}/bad.json")
 set(write --output "${WORK}/bad.off" --report "${WORK}/bad.json")
