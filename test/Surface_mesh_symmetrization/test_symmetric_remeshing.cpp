@@ -305,6 +305,33 @@ TEST(SymmetricSimplification, EitherOrientationOfThePlaneGivesTheSameMesh)
   EXPECT_EQ(ra.remeshing.after.symmetric_edges, 1.0);
 }
 
+// Restoring, the remeshing and the copy of a whole side are both tried, and the closest to the input
+// kept (measured as the function measures): on this warped ellipsoid the remeshing, closer than
+// both copies (copy_one_side keeps the better copy).
+TEST(SymmetricSimplification, TheClosestCandidateIsKept)
+{
+  Mesh input = ellipsoid(18, 32, 0.2, 7);
+  for(auto v : vertices(input)) {
+    const Point& p = input.point(v);
+    const auto q = SAS::asymmetric_warp({{p.x(), p.y(), p.z()}}, 0.05);
+    input.point(v) = Point(q[0], q[1], q[2]);
+  }
+  const std::size_t target = num_faces(input) / 5;
+  Mesh best = input, copied = input;
+  const SY::Symmetric_simplification_result rb =
+    SY::symmetric_simplification(best, y_reflection, SY::parameters::number_of_faces(target));
+  const SY::Symmetric_simplification_result rc =
+    SY::symmetric_simplification(copied, y_reflection, SY::parameters::number_of_faces(target).copy_one_side(true));
+  EXPECT_TRUE(rc.remeshing.copied_whole_side);
+  EXPECT_EQ(rc.remeshing.after.symmetric_edges, 1.0);
+  const SYI::Surface_index to(surface_of(input));
+  const double db = SYI::sampled_hausdorff(SYI::Surface_index(surface_of(best)), to, 1);
+  const double dc = SYI::sampled_hausdorff(SYI::Surface_index(surface_of(copied)), to, 1);
+  EXPECT_FALSE(rb.remeshing.copied_whole_side);
+  EXPECT_LT(db, dc);
+  EXPECT_GT(db, 0.0);
+}
+
 // The refinement of a restored meta-mesh: a coarse mesh of symmetric connectivity on a symmetric
 // ellipsoid, restored onto a warped fine copy of it, is refined where it leaves that copy; the
 // splits keep it mirrored (the new points paired, mutually, and at mirror positions) and bring it
