@@ -337,6 +337,65 @@ std::size_t restore_and_decimate(Surface& out, std::vector<std::uint32_t>& partn
   return flips;
 }
 
+
+// The restore path's choice among the remeshings of `work` (the symmetrized mesh): the remeshing
+// and the copy of a whole side (only the latter with `ro.copy_one_side`), each copying either side
+// of `symmetry`'s plane, each restored and decimated (restore_and_decimate()); the result closest to
+// `input` (sampled_hausdorff()) goes to `out`, what made it to `r`.
+template <typename Work, typename Kernel, typename Vector>
+void restore_closest_candidate(const Work& work, const Symmetry<Kernel>& symmetry, const Symmetric_remeshing_options& ro,
+                               std::size_t threads, const Surface& symmetrized, const std::vector<Vector>& residuals,
+                               const Surface& input, std::size_t faces, Symmetric_simplification_result& r, Surface& out)
+{
+  // The remeshing copies one side's faces over the other's where their connectivity differs:
+  // restored, the copy may follow the other side's creases better one way than the other (PSB
+  // meshes 41 and 241, at a fifth of the faces: 1.46 and 1.29 times Garland-Heckbert's distance
+  // copying the positive side, 1.16 and 1.18 copying the negative one), and the copy of a whole
+  // side, whose faces are the input's own there, may be closer than either (PSB 142: 1.27
+  // against 1.53; 141: 4.5 against 4.1). The four are tried, the one closest to the input kept.
+  const Surface_index index(symmetrized), input_index(input);
+  Symmetry<Kernel> opposite = symmetry;
+  opposite.plane = symmetry.plane.opposite();
+  double best = 0;
+  bool found = false;
+  std::string first_error;
+  for(bool whole_side : {false, true})
+    for(int side : {1, -1}) {
+      if(ro.copy_one_side && !whole_side)
+        continue;
+      Work copy = work;
+      Symmetric_remeshing_result remeshing;
+      try {
+        remeshing = Surface_mesh_symmetrization::symmetric_remeshing(
+          copy, side > 0 ? symmetry : opposite,
+          parameters::number_of_faces(std::size_t(-1)).pairing_tolerance(ro.pairing_tolerance).copy_one_side(whole_side));
+      } catch(const Bad_input& e) { // (that side, copied, is not a manifold surface: the others stand)
+        if(first_error.empty())
+          first_error = e.what();
+        continue;
+      }
+      Surface candidate = read_mesh_np(copy, parameters::default_values(), "symmetric_simplification").surface;
+      std::vector<std::uint32_t> partner;
+      for(std::size_t m : remeshing.after.mirror_vertex)
+        partner.push_back(m == Symmetric_connectivity::no_vertex ? no_partner : std::uint32_t(m));
+      const std::size_t flips =
+        restore_and_decimate(candidate, partner, index, symmetrized, residuals, input, input_index, faces);
+      const double distance = sampled_hausdorff(Surface_index(candidate), input_index, threads);
+      if(!found || distance < best) {
+        found = true;
+        best = distance;
+        out = std::move(candidate);
+        r.remeshing = remeshing;
+        r.remeshing.faces = out.triangles.size();
+        r.remeshing.after = public_connectivity(out, partner);
+        r.restore_flips = flips;
+        r.copied_side = side;
+      }
+    }
+  if(!found)
+    throw Bad_input(first_error);
+}
+
 } // namespace internal
 /// \endcond
 
@@ -479,57 +538,9 @@ Symmetric_simplification_result symmetric_simplification(TriangleMesh& tm, const
                                         .pairing_tolerance(ro.pairing_tolerance)
                                         .copy_one_side(ro.copy_one_side));
     out = internal::read_mesh_np(work, parameters::default_values(), who).surface;
-  } else {
-    // The remeshing copies one side's faces over the other's where their connectivity differs:
-    // restored, the copy may follow the other side's creases better one way than the other (PSB
-    // meshes 41 and 241, at a fifth of the faces: 1.46 and 1.29 times Garland-Heckbert's distance
-    // copying the positive side, 1.16 and 1.18 copying the negative one), and the copy of a whole
-    // side, whose faces are the input's own there, may be closer than either (PSB 142: 1.27
-    // against 1.53; 141: 4.5 against 4.1). The four are tried, the one closest to the input kept.
-    const internal::Surface_index index(symmetrized), input_index(input.surface);
-    Symmetry<Kernel> opposite = symmetry;
-    opposite.plane = symmetry.plane.opposite();
-    double best = 0;
-    bool found = false;
-    std::string first_error;
-    for(bool whole_side : {false, true})
-      for(int side : {1, -1}) {
-        if(ro.copy_one_side && !whole_side)
-          continue;
-        Work copy = work;
-        Symmetric_remeshing_result remeshing;
-        try {
-          remeshing = symmetric_remeshing(copy, side > 0 ? symmetry : opposite,
-                                          parameters::number_of_faces(std::size_t(-1))
-                                            .pairing_tolerance(ro.pairing_tolerance)
-                                            .copy_one_side(whole_side));
-        } catch(const Bad_input& e) { // (that side, copied, is not a manifold surface: the others stand)
-          if(first_error.empty())
-            first_error = e.what();
-          continue;
-        }
-        internal::Surface candidate = internal::read_mesh_np(copy, parameters::default_values(), who).surface;
-        std::vector<std::uint32_t> partner;
-        for(std::size_t m : remeshing.after.mirror_vertex)
-          partner.push_back(m == Symmetric_connectivity::no_vertex ? internal::no_partner : std::uint32_t(m));
-        const std::size_t flips = internal::restore_and_decimate(candidate, partner, index, symmetrized, s.residuals,
-                                                                 input.surface, input_index, faces);
-        const double distance =
-          internal::sampled_hausdorff(internal::Surface_index(candidate), input_index, so.number_of_threads);
-        if(!found || distance < best) {
-          found = true;
-          best = distance;
-          out = std::move(candidate);
-          r.remeshing = remeshing;
-          r.remeshing.faces = out.triangles.size();
-          r.remeshing.after = internal::public_connectivity(out, partner);
-          r.restore_flips = flips;
-          r.copied_side = side;
-        }
-      }
-    if(!found)
-      throw Bad_input(first_error);
-  }
+  } else
+    internal::restore_closest_candidate(work, symmetry, ro, so.number_of_threads, symmetrized, s.residuals,
+                                        input.surface, faces, r, out);
   r.restored = restore;
   r.faces = out.triangles.size();
   internal::rebuild_mesh(tm, out, np);
