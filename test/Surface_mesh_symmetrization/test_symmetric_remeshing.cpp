@@ -246,14 +246,21 @@ TEST(SymmetricRemeshing, BadInputIsRefusedAndTheMeshKept)
   EXPECT_THROW(SY::symmetric_remeshing(m = Mesh(), y_reflection), CGAL::Shape_analysis::Bad_input);
 }
 
-TEST(SymmetricSimplification, RestoredResultLiesOnTheAsymmetricInput)
+// ellipsoid(18, 32, 0.2, seed) warped asymmetrically (by 0.05): a nearly symmetric surface.
+Mesh warped_ellipsoid(unsigned seed)
 {
-  Mesh input = ellipsoid(18, 32, 0.2, 11);
+  Mesh input = ellipsoid(18, 32, 0.2, seed);
   for(auto v : vertices(input)) {
     const Point& p = input.point(v);
     const auto q = SAS::asymmetric_warp({{p.x(), p.y(), p.z()}}, 0.05);
     input.point(v) = Point(q[0], q[1], q[2]);
   }
+  return input;
+}
+
+TEST(SymmetricSimplification, RestoredResultLiesOnTheAsymmetricInput)
+{
+  const Mesh input = warped_ellipsoid(11);
   const std::size_t target = num_faces(input) / 5;
   Mesh restored = input, symmetric = input;
   const SY::Symmetric_simplification_result r =
@@ -285,12 +292,7 @@ TEST(SymmetricSimplification, RestoredResultLiesOnTheAsymmetricInput)
 // none, shows).
 TEST(SymmetricSimplification, EitherOrientationOfThePlaneGivesTheSameMesh)
 {
-  Mesh input = ellipsoid(18, 32, 0.2, 5);
-  for(auto v : vertices(input)) {
-    const Point& p = input.point(v);
-    const auto q = SAS::asymmetric_warp({{p.x(), p.y(), p.z()}}, 0.05);
-    input.point(v) = Point(q[0], q[1], q[2]);
-  }
+  const Mesh input = warped_ellipsoid(5);
   const std::size_t target = num_faces(input) / 5;
   const Symmetry turned = SY::reflective_symmetry<Kernel>(Kernel::Plane_3(0, -1, 0, 0));
   Mesh a = input, b = input;
@@ -310,12 +312,7 @@ TEST(SymmetricSimplification, EitherOrientationOfThePlaneGivesTheSameMesh)
 // both copies (copy_one_side keeps the better copy).
 TEST(SymmetricSimplification, TheClosestCandidateIsKept)
 {
-  Mesh input = ellipsoid(18, 32, 0.2, 7);
-  for(auto v : vertices(input)) {
-    const Point& p = input.point(v);
-    const auto q = SAS::asymmetric_warp({{p.x(), p.y(), p.z()}}, 0.05);
-    input.point(v) = Point(q[0], q[1], q[2]);
-  }
+  const Mesh input = warped_ellipsoid(7);
   const std::size_t target = num_faces(input) / 5;
   Mesh best = input, copied = input;
   const SY::Symmetric_simplification_result rb =

@@ -223,7 +223,9 @@ std::size_t refine_restored(Surface& symmetric, Surface& restored, std::vector<s
 // 0.0039, the cow 0.00844 -> 0.00848 (with the decimation's former quadrics, its faces' own
 // planes). More rounds refine the asymmetric regions further, and the decimation then collapses
 // the rest first: with the input's quadrics (provenance_quadrics()), two and three rounds give
-// the cow 0.0081 and 0.025, PSB mesh 1 0.0092 and 0.0109, against 0.0070 and 0.0059 with one.
+// the cow 0.0081 and 0.025, PSB mesh 1 0.0092 and 0.0109, against 0.0070 and 0.0059 with one;
+// but PSB 141 0.00078 and 142 0.00099 with two against 0.00089 and 0.00105: so the best candidate
+// of restore_closest_candidate() is tried again with two.
 constexpr double restore_tolerance = 5e-4;
 constexpr std::size_t refinement_face_budget = 4;
 constexpr int refinement_rounds = 1;
@@ -310,12 +312,13 @@ inline double sampled_hausdorff(const Surface_index& a, const Surface_index& b, 
 
 // The restore path of symmetric_simplification() on `out`, the symmetric remeshing of the
 // symmetrized surface (its pairs `partner`): its points restored, refined where the restored mesh
-// leaves the input, decimated to `faces` with the input's quadrics, flipped towards the input's
+// leaves the input (at most `rounds` rounds), decimated to `faces` with the input's quadrics, flipped towards the input's
 // creases. Returns the number of flips.
 template <typename Vector>
 std::size_t restore_and_decimate(Surface& out, std::vector<std::uint32_t>& partner, const Surface_index& index,
                                  const Surface& symmetrized, const std::vector<Vector>& residuals,
-                                 const Surface& input, const Surface_index& input_index, std::size_t faces)
+                                 const Surface& input, const Surface_index& input_index, std::size_t faces,
+                                 int rounds)
 {
   Surface symmetric = out;
   const std::vector<Vector_3d> normals = out.vertex_normals();
@@ -323,7 +326,7 @@ std::size_t restore_and_decimate(Surface& out, std::vector<std::uint32_t>& partn
   for(std::size_t i = 0; i < out.points.size(); ++i)
     out.points[i] = restored_point(index, symmetrized, residuals, symmetric.points[i], normals[i], hint, false);
   refine_restored(symmetric, out, partner, index, symmetrized, residuals, restore_tolerance * symmetrized.diagonal(),
-                  refinement_face_budget * out.triangles.size(), refinement_rounds);
+                  refinement_face_budget * out.triangles.size(), rounds);
   const std::vector<Symmetric_decimator::Quadric> quadrics = provenance_quadrics(out, input, input_index);
   Symmetric_decimator decimator(out, partner, false, &quadrics);
   while(decimator.number_of_faces() > faces && (decimator.step() || decimator.allow_other_positions())) {
@@ -340,8 +343,9 @@ std::size_t restore_and_decimate(Surface& out, std::vector<std::uint32_t>& partn
 
 // The restore path's choice among the remeshings of `work` (the symmetrized mesh): the remeshing
 // and the copy of a whole side (only the latter with `ro.copy_one_side`), each copying either side
-// of `symmetry`'s plane, each restored and decimated (restore_and_decimate()); the result closest to
-// `input` (sampled_hausdorff()) goes to `out`, what made it to `r`.
+// of `symmetry`'s plane, each restored and decimated (restore_and_decimate()), then the best of
+// them with one more round of refinement; the result closest to `input` (sampled_hausdorff()) goes
+// to `out`, what made it to `r`.
 template <typename Work, typename Kernel, typename Vector>
 void restore_closest_candidate(const Work& work, const Symmetry<Kernel>& symmetry, const Symmetric_remeshing_options& ro,
                                std::size_t threads, const Surface& symmetrized, const std::vector<Vector>& residuals,
@@ -352,46 +356,52 @@ void restore_closest_candidate(const Work& work, const Symmetry<Kernel>& symmetr
   // meshes 41 and 241, at a fifth of the faces: 1.46 and 1.29 times Garland-Heckbert's distance
   // copying the positive side, 1.16 and 1.18 copying the negative one), and the copy of a whole
   // side, whose faces are the input's own there, may be closer than either (PSB 142: 1.27
-  // against 1.53; 141: 4.5 against 4.1). The four are tried, the one closest to the input kept.
+  // against 1.53; 141: 4.5 against 4.1). The four are tried, then the best of them with one more
+  // round of refinement; the one closest to the input is kept.
   const Surface_index index(symmetrized), input_index(input);
   Symmetry<Kernel> opposite = symmetry;
   opposite.plane = symmetry.plane.opposite();
   double best = 0;
-  bool found = false;
+  bool found = false, best_whole_side = false;
+  int best_side = 1;
   std::string first_error;
-  for(bool whole_side : {false, true})
-    for(int side : {1, -1}) {
-      if(ro.copy_one_side && !whole_side)
-        continue;
-      Work copy = work;
-      Symmetric_remeshing_result remeshing;
-      try {
-        remeshing = Surface_mesh_symmetrization::symmetric_remeshing(
-          copy, side > 0 ? symmetry : opposite,
-          parameters::number_of_faces(std::size_t(-1)).pairing_tolerance(ro.pairing_tolerance).copy_one_side(whole_side));
-      } catch(const Bad_input& e) { // (that side, copied, is not a manifold surface: the others stand)
-        if(first_error.empty())
-          first_error = e.what();
-        continue;
-      }
-      Surface candidate = read_mesh_np(copy, parameters::default_values(), "symmetric_simplification").surface;
-      std::vector<std::uint32_t> partner;
-      for(std::size_t m : remeshing.after.mirror_vertex)
-        partner.push_back(m == Symmetric_connectivity::no_vertex ? no_partner : std::uint32_t(m));
-      const std::size_t flips =
-        restore_and_decimate(candidate, partner, index, symmetrized, residuals, input, input_index, faces);
-      const double distance = sampled_hausdorff(Surface_index(candidate), input_index, threads);
-      if(!found || distance < best) {
-        found = true;
-        best = distance;
-        out = std::move(candidate);
-        r.remeshing = remeshing;
-        r.remeshing.faces = out.triangles.size();
-        r.remeshing.after = public_connectivity(out, partner);
-        r.restore_flips = flips;
-        r.copied_side = side;
-      }
+  const auto try_candidate = [&](bool whole_side, int side, int rounds) {
+    Work copy = work;
+    Symmetric_remeshing_result remeshing;
+    try {
+      remeshing = Surface_mesh_symmetrization::symmetric_remeshing(
+        copy, side > 0 ? symmetry : opposite,
+        parameters::number_of_faces(std::size_t(-1)).pairing_tolerance(ro.pairing_tolerance).copy_one_side(whole_side));
+    } catch(const Bad_input& e) { // (that side, copied, is not a manifold surface: the others stand)
+      if(first_error.empty())
+        first_error = e.what();
+      return;
     }
+    Surface candidate = read_mesh_np(copy, parameters::default_values(), "symmetric_simplification").surface;
+    std::vector<std::uint32_t> partner;
+    for(std::size_t m : remeshing.after.mirror_vertex)
+      partner.push_back(m == Symmetric_connectivity::no_vertex ? no_partner : std::uint32_t(m));
+    const std::size_t flips =
+      restore_and_decimate(candidate, partner, index, symmetrized, residuals, input, input_index, faces, rounds);
+    const double distance = sampled_hausdorff(Surface_index(candidate), input_index, threads);
+    if(!found || distance < best) {
+      found = true;
+      best = distance;
+      best_whole_side = whole_side, best_side = side;
+      out = std::move(candidate);
+      r.remeshing = remeshing;
+      r.remeshing.faces = out.triangles.size();
+      r.remeshing.after = public_connectivity(out, partner);
+      r.restore_flips = flips;
+      r.copied_side = side;
+    }
+  };
+  for(bool whole_side : {false, true})
+    for(int side : {1, -1})
+      if(whole_side || !ro.copy_one_side)
+        try_candidate(whole_side, side, refinement_rounds);
+  if(found) // the best once more, refined further
+    try_candidate(best_whole_side, best_side, refinement_rounds + 1);
   if(!found)
     throw Bad_input(first_error);
 }
@@ -426,11 +436,12 @@ mirrored. Where the two sides' connectivity differs, the remeshing copies one si
 the other's, and restored, one side's copy may follow the other side's creases better than the
 reverse, and the copy of a whole side (`copy_one_side`), whose faces are the input's own there,
 better than both: with `restore_residuals`, all of the above runs four times, remeshing and
-copying a whole side, each copying either side, and the result closest to the input is kept (the
-larger of the two one-sided distances between the result and the input, sampled at ten points per
-face; `Symmetric_simplification_result::copied_side` and `remeshing.copied_whole_side` tell which;
-with `copy_one_side`, only the two copies of a whole side are tried). The result does not depend on
-the orientation of the plane's normal.
+copying a whole side, each copying either side, then once more for the best of them with a second
+round of refinement, and the result closest to the input is kept (the larger of the two one-sided
+distances between the result and the input, sampled at ten points per face;
+`Symmetric_simplification_result::copied_side` and `remeshing.copied_whole_side` tell which; with
+`copy_one_side`, only the copies of a whole side are tried). The result does not depend on the
+orientation of the plane's normal.
 
 \tparam TriangleMesh a model of `MutableFaceGraph` and `FaceListGraph`
 \tparam Kernel the kernel of the symmetry
