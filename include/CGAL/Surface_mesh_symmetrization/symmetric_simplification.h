@@ -297,7 +297,8 @@ inline double sampled_hausdorff(const Surface_index& a, const Surface_index& b, 
       const auto c = s.corners(f);
       for(int i = 0; i <= 3; ++i)
         for(int j = 0; i + j <= 3; ++j) {
-          const Surface_point q = other.closest((c[0] * double(i) + c[1] * double(j) + c[2] * double(3 - i - j)) / 3.0, hint);
+          const Vector_3d p = (c[0] * double(i) + c[1] * double(j) + c[2] * double(3 - i - j)) / 3.0;
+          const Surface_point q = other.closest(p, hint);
           if(q.found) {
             hint = q.face;
             d[f] = (std::max)(d[f], q.squared_distance);
@@ -312,8 +313,8 @@ inline double sampled_hausdorff(const Surface_index& a, const Surface_index& b, 
 
 // The restore path of symmetric_simplification() on `out`, the symmetric remeshing of the
 // symmetrized surface (its pairs `partner`): its points restored, refined where the restored mesh
-// leaves the input (at most `rounds` rounds), decimated to `faces` with the input's quadrics, flipped towards the input's
-// creases. Returns the number of flips.
+// leaves the input (at most `rounds` rounds), decimated to `faces` with the input's quadrics,
+// flipped towards the input's creases. Returns the number of flips.
 template <typename Vector>
 std::size_t restore_and_decimate(Surface& out, std::vector<std::uint32_t>& partner, const Surface_index& index,
                                  const Surface& symmetrized, const std::vector<Vector>& residuals,
@@ -340,16 +341,16 @@ std::size_t restore_and_decimate(Surface& out, std::vector<std::uint32_t>& partn
   return flips;
 }
 
-
 // The restore path's choice among the remeshings of `work` (the symmetrized mesh): the remeshing
 // and the copy of a whole side (only the latter with `ro.copy_one_side`), each copying either side
 // of `symmetry`'s plane, each restored and decimated (restore_and_decimate()), then the best of
 // them with one more round of refinement; the result closest to `input` (sampled_hausdorff()) goes
 // to `out`, what made it to `r`.
 template <typename Work, typename Kernel, typename Vector>
-void restore_closest_candidate(const Work& work, const Symmetry<Kernel>& symmetry, const Symmetric_remeshing_options& ro,
-                               std::size_t threads, const Surface& symmetrized, const std::vector<Vector>& residuals,
-                               const Surface& input, std::size_t faces, Symmetric_simplification_result& r, Surface& out)
+void restore_closest_candidate(const Work& work, const Symmetry<Kernel>& symmetry,
+                               const Symmetric_remeshing_options& ro, std::size_t threads, const Surface& symmetrized,
+                               const std::vector<Vector>& residuals, const Surface& input, std::size_t faces,
+                               Symmetric_simplification_result& r, Surface& out)
 {
   // The remeshing copies one side's faces over the other's where their connectivity differs:
   // restored, the copy may follow the other side's creases better one way than the other (PSB
