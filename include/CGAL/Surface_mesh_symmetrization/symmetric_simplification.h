@@ -283,8 +283,8 @@ inline std::vector<Symmetric_decimator::Quadric> provenance_quadrics(const Surfa
 
 // An estimate of the two-sided Hausdorff distance between the surfaces of `a` and `b`: the largest
 // distance to the other surface of the points of every face at barycentric coordinates (i, j, k) / 3
-// (its corners, two points on each edge and its centroid). Faces in parallel; the result does not
-// depend on the number of threads.
+// (Surface_index::samples_of() with a grid of 3: its corners, two points on each edge and its
+// centroid). Faces in parallel; the result does not depend on the number of threads.
 inline double sampled_hausdorff(const Surface_index& a, const Surface_index& b, std::size_t threads)
 {
   double largest = 0;
@@ -294,16 +294,13 @@ inline double sampled_hausdorff(const Surface_index& a, const Surface_index& b, 
     std::vector<double> d(s.triangles.size(), 0);
     SAI::Parallel_workspaces<std::uint32_t> hints(threads);
     hints.for_each(0, s.triangles.size(), [&](std::size_t f, std::uint32_t& hint) {
-      const auto c = s.corners(f);
-      for(int i = 0; i <= 3; ++i)
-        for(int j = 0; i + j <= 3; ++j) {
-          const Vector_3d p = (c[0] * double(i) + c[1] * double(j) + c[2] * double(3 - i - j)) / 3.0;
-          const Surface_point q = other.closest(p, hint);
-          if(q.found) {
-            hint = q.face;
-            d[f] = (std::max)(d[f], q.squared_distance);
-          }
+      Surface_index::samples_of(s.corners(f), 3, [&](const Vector_3d& p, std::uint32_t) {
+        const Surface_point q = other.closest(p, hint);
+        if(q.found) {
+          hint = q.face;
+          d[f] = (std::max)(d[f], q.squared_distance);
         }
+      });
     });
     for(double x : d)
       largest = (std::max)(largest, x);
@@ -362,47 +359,61 @@ void restore_closest_candidate(const Work& work, const Symmetry<Kernel>& symmetr
   const Surface_index index(symmetrized), input_index(input);
   Symmetry<Kernel> opposite = symmetry;
   opposite.plane = symmetry.plane.opposite();
-  double best = 0;
-  bool found = false, best_whole_side = false;
-  int best_side = 1;
+  struct Remeshed // a candidate before its restore
+  {
+    Surface surface;
+    std::vector<std::uint32_t> partner;
+    Symmetric_remeshing_result result;
+    int side;
+  };
   std::string first_error;
-  const auto try_candidate = [&](bool whole_side, int side, int rounds) {
+  const auto remesh = [&](bool whole_side, int side, Remeshed& m) {
     Work copy = work;
-    Symmetric_remeshing_result remeshing;
     try {
-      remeshing = Surface_mesh_symmetrization::symmetric_remeshing(
+      m.result = Surface_mesh_symmetrization::symmetric_remeshing(
         copy, side > 0 ? symmetry : opposite,
         parameters::number_of_faces(std::size_t(-1)).pairing_tolerance(ro.pairing_tolerance).copy_one_side(whole_side));
     } catch(const Bad_input& e) { // (that side, copied, is not a manifold surface: the others stand)
       if(first_error.empty())
         first_error = e.what();
-      return;
+      return false;
     }
-    Surface candidate = read_mesh_np(copy, parameters::default_values(), "symmetric_simplification").surface;
-    std::vector<std::uint32_t> partner;
-    for(std::size_t m : remeshing.after.mirror_vertex)
-      partner.push_back(m == Symmetric_connectivity::no_vertex ? no_partner : std::uint32_t(m));
+    m.surface = read_mesh_np(copy, parameters::default_values(), "symmetric_simplification").surface;
+    for(std::size_t v : m.result.after.mirror_vertex)
+      m.partner.push_back(v == Symmetric_connectivity::no_vertex ? no_partner : std::uint32_t(v));
+    m.side = side;
+    return true;
+  };
+  double best = 0;
+  bool found = false;
+  // Restores, decimates and measures `m`; whether it is the closest so far (then in `out`, `r`).
+  const auto evaluate = [&](const Remeshed& m, int rounds) {
+    Surface candidate = m.surface;
+    std::vector<std::uint32_t> partner = m.partner;
     const std::size_t flips =
       restore_and_decimate(candidate, partner, index, symmetrized, residuals, input, input_index, faces, rounds);
     const double distance = sampled_hausdorff(Surface_index(candidate), input_index, threads);
-    if(!found || distance < best) {
-      found = true;
-      best = distance;
-      best_whole_side = whole_side, best_side = side;
-      out = std::move(candidate);
-      r.remeshing = remeshing;
-      r.remeshing.faces = out.triangles.size();
-      r.remeshing.after = public_connectivity(out, partner);
-      r.restore_flips = flips;
-      r.copied_side = side;
-    }
+    if(found && !(distance < best))
+      return false;
+    found = true;
+    best = distance;
+    out = std::move(candidate);
+    r.remeshing = m.result;
+    r.remeshing.faces = out.triangles.size();
+    r.remeshing.after = public_connectivity(out, partner);
+    r.restore_flips = flips;
+    r.copied_side = m.side;
+    return true;
   };
+  Remeshed closest;
   for(bool whole_side : {false, true})
-    for(int side : {1, -1})
-      if(whole_side || !ro.copy_one_side)
-        try_candidate(whole_side, side, refinement_rounds);
-  if(found) // the best once more, refined further
-    try_candidate(best_whole_side, best_side, refinement_rounds + 1);
+    for(int side : {1, -1}) {
+      Remeshed m;
+      if((whole_side || !ro.copy_one_side) && remesh(whole_side, side, m) && evaluate(m, refinement_rounds))
+        closest = std::move(m);
+    }
+  if(found) // the closest once more, refined further
+    evaluate(closest, refinement_rounds + 1);
   if(!found)
     throw Bad_input(first_error);
 }

@@ -312,6 +312,22 @@ public:
     return best;
   }
 
+  // The points of a face of corners c and grid size n (0: the centroid), numbered in order.
+  template <typename Visit>
+  static void samples_of(const std::array<Vector_3d, 3>& c, std::uint32_t n, const Visit& visit)
+  {
+    if(n == 0) {
+      visit((c[0] + c[1] + c[2]) / 3.0, 0u);
+      return;
+    }
+    std::uint32_t number = 0;
+    for(std::uint32_t i = 0; i <= n; ++i)
+      for(std::uint32_t k = 0; i + k <= n; ++k) {
+        const double u = double(i) / double(n), v = double(k) / double(n);
+        visit(c[0] * (1 - u - v) + c[1] * u + c[2] * v, number++);
+      }
+  }
+
 private:
   typedef SAI::Bvh::Box Box;
 
@@ -396,22 +412,6 @@ private:
   void face_samples(std::size_t j, const Visit& visit) const
   {
     samples_of(m_leaf_corners[j], m_leaf_grid[j], visit);
-  }
-
-  // The points of a face of corners c and grid size n (0: the centroid), numbered in order.
-  template <typename Visit>
-  static void samples_of(const std::array<Vector_3d, 3>& c, std::uint32_t n, const Visit& visit)
-  {
-    if(n == 0) {
-      visit((c[0] + c[1] + c[2]) / 3.0, 0u);
-      return;
-    }
-    std::uint32_t number = 0;
-    for(std::uint32_t i = 0; i <= n; ++i)
-      for(std::uint32_t k = 0; i + k <= n; ++k) {
-        const double u = double(i) / double(n), v = double(k) / double(n);
-        visit(c[0] * (1 - u - v) + c[1] * u + c[2] * v, number++);
-      }
   }
 
   double longest_edge(std::size_t f) const
