@@ -389,6 +389,35 @@ TEST(SymmetricSimplification, RefinementFollowsTheInputAndStaysMirrored)
   EXPECT_EQ(s2.triangles.size(), faces);
 }
 
+// The snap of the finer restore pass: points of an ellipsoid pushed off it along their normals by
+// growing offsets; those farther than the threshold end on the surface, the others stay put.
+TEST(SymmetricSimplification, SnapMovesOnlyTheFarPointsOntoTheInput)
+{
+  const SYI::Surface surface = surface_of(ellipsoid(16, 24, 0.2, 5));
+  const SYI::Surface_index index(surface);
+  const std::vector<Vector_3d> normals = surface.vertex_normals();
+  const double diagonal = surface.diagonal(), threshold = 0.01 * diagonal;
+  SYI::Surface moved = surface;
+  std::vector<double> offset(moved.points.size());
+  for(std::size_t i = 0; i < moved.points.size(); ++i) {
+    offset[i] = 0.02 * diagonal * double(i % 7) / 6.0; // 0 to twice the threshold
+    moved.points[i] += normals[i] / normals[i].length() * offset[i];
+  }
+  const SYI::Surface before = moved;
+  SYI::snap_onto(moved, index, threshold);
+  std::size_t snapped = 0;
+  for(std::size_t i = 0; i < moved.points.size(); ++i) {
+    const double d = std::sqrt(index.closest(moved.points[i]).squared_distance);
+    if(offset[i] > 1.1 * threshold) {
+      EXPECT_LT(d, 1e-9 * diagonal) << i;
+      EXPECT_LT((moved.points[i] - surface.points[i]).length(), 0.05 * diagonal) << "to its own place, near";
+      ++snapped;
+    } else if(offset[i] < 0.9 * threshold)
+      EXPECT_EQ((moved.points[i] - before.points[i]).length(), 0.0) << i;
+  }
+  EXPECT_GT(snapped, moved.points.size() / 4);
+}
+
 // The flips after the restore's decimation: a square pyramid (mirror plane x = 0) meshed on a
 // grid whose squares across the pyramid's edges take the diagonal that cuts them, mirrored,
 // comes out on the pyramid (the reference surface) with its connectivity still mirrored.
