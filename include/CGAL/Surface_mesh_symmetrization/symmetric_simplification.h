@@ -448,25 +448,27 @@ void restore_closest_candidate(const Work& work, const Symmetry<Kernel>& symmetr
     r.copied_side = m.side;
     return true;
   };
-  Remeshed closest, closest_copy; // the closest candidate; the closest copy of a whole side
-  double copy_distance = std::numeric_limits<double>::infinity(), distance = 0;
+  std::vector<Remeshed> made; // the candidates; the closest one, the closest copy of a whole side
+  const std::size_t none = std::size_t(-1);
+  std::size_t closest = 0, closest_copy = none;
+  double copy_distance = 0, distance = 0;
   for(bool whole_side : {false, true})
     for(int side : {1, -1}) {
       Remeshed m;
       if(!(whole_side || !ro.copy_one_side) || !remesh(whole_side, side, m))
         continue;
-      const bool closer = evaluate(m, Restore_pass(), distance);
-      if(m.result.copied_whole_side && distance < copy_distance)
-        copy_distance = distance, closest_copy = m;
-      if(closer)
-        closest = std::move(m);
+      if(evaluate(m, Restore_pass(), distance))
+        closest = made.size();
+      if(m.result.copied_whole_side && (closest_copy == none || distance < copy_distance))
+        copy_distance = distance, closest_copy = made.size();
+      made.push_back(std::move(m));
     }
   if(found) { // the closest once more, refined further; the closest copy finer, snapped
     Restore_pass further;
     further.rounds = refinement_rounds + 1;
-    evaluate(closest, further, distance);
-    if(copy_distance < std::numeric_limits<double>::infinity())
-      evaluate(closest_copy, fine_restore_pass, distance);
+    evaluate(made[closest], further, distance);
+    if(closest_copy != none)
+      evaluate(made[closest_copy], fine_restore_pass, distance);
   }
   if(!found)
     throw Bad_input(first_error);
