@@ -217,6 +217,25 @@ TEST(Segmentation, MethodsAndParameters)
   EXPECT_EQ(PSOR::segment_objects(ps, std::vector<std::array<double, 3>>{at}).objects[0].points, a.points);
 }
 
+// A radius far beyond the cloud visits the cloud's columns only (it walked (2r)^2 cells, and
+// 1e300 overflowed the cell index): every point within it, at once.
+TEST(Segmentation, HugeRadiiVisitOnlyTheCloud)
+{
+  Cloud c;
+  c.post(0, 0, 0.1, 2, 0.03, 1);
+  c.post(1.5, 0, 0.1, 2, 0.03, 2);
+  const std::array<double, 3> at{{0, 0, 0}};
+  for(double r : {1e9, 1e300}) {
+    const auto all = PSOR::segment_object(
+      c.points, at, PSOR::parameters::segmentation_method(PSOR::Segmentation_method::ALL_WITHIN_RADIUS).background_radius(r));
+    EXPECT_EQ(all.points.size(), c.points.size()) << r;
+    const auto cut = PSOR::segment_object(
+      c.points, at, PSOR::parameters::segmentation_method(PSOR::Segmentation_method::MIN_CUT).background_radius(r));
+    EXPECT_FALSE(cut.points.empty()) << r;
+    EXPECT_LE(cut.points.size(), c.points.size()) << r;
+  }
+}
+
 TEST(Segmentation, InteractiveConstraintsAreHonoured)
 {
   Cloud c;

@@ -173,8 +173,14 @@ struct Tile_grid
   double side = 1;
   long nx = 1, ny = 1;
 
-  long column(double x) const { return (std::min)(nx - 1, (std::max)(0L, long(std::floor((x - lo[0]) / side)))); }
-  long row(double y) const { return (std::min)(ny - 1, (std::max)(0L, long(std::floor((y - lo[1]) / side)))); }
+  long column(double x) const { return clamped((x - lo[0]) / side, nx); }
+  long row(double y) const { return clamped((y - lo[1]) / side, ny); }
+  // floor(t) clamped to [0, n - 1] before the conversion (no overflow, NaN to 0).
+  static long clamped(double t, long n)
+  {
+    const double f = std::floor(t);
+    return f >= double(n - 1) ? n - 1 : (f > 0 ? long(f) : 0L);
+  }
   std::size_t tile(double x, double y) const { return std::size_t(row(y) * nx + column(x)); }
 };
 

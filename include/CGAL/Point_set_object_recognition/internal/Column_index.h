@@ -150,6 +150,12 @@ public:
     return {value, true};
   }
 
+  // The box of columns given to reset(): [i_first(), i_last()] x [j_first(), j_last()].
+  long i_first() const { return m_i0; }
+  long j_first() const { return m_j0; }
+  long i_last() const { return m_i0 + m_ni - 1; }
+  long j_last() const { return m_j0 + m_nj - 1; }
+
   std::uint32_t find(std::uint64_t k) const
   {
     if(!m_dense)
@@ -226,16 +232,30 @@ struct Key_lists
   template <typename G>
   void for_square_lists(const P3& lo, double side, const P3& at, double radius, const G& g) const
   {
-    const long i0 = (std::max)(0L, long(std::floor((at[0] - radius - lo[0]) / side)));
-    const long i1 = long(std::floor((at[0] + radius - lo[0]) / side));
-    const long j0 = (std::max)(0L, long(std::floor((at[1] - radius - lo[1]) / side)));
-    const long j1 = long(std::floor((at[1] + radius - lo[1]) / side));
+    // Only the columns of the index's box are visited, however large `radius` (the bounds are
+    // clamped in floating point before any conversion, so that 1e300 is no overflow either).
+    long i0, i1, j0, j1;
+    if(!span(at[0] - radius - lo[0], at[0] + radius - lo[0], side, index.i_first(), index.i_last(), i0, i1) ||
+       !span(at[1] - radius - lo[1], at[1] + radius - lo[1], side, index.j_first(), index.j_last(), j0, j1))
+      return;
     for(long j = j0; j <= j1; ++j)
       for(long i = i0; i <= i1; ++i) {
         const std::uint32_t c = find(Column_index::key(i, j));
         if(c != Key_map::none)
           g(i, j, c);
       }
+  }
+
+  // The columns [x0, x1] of [first, last] that meet [a, b] (offsets from the grid's origin),
+  // false when none does.
+  static bool span(double a, double b, double side, long first, long last, long& x0, long& x1)
+  {
+    const double f0 = std::floor(a / side), f1 = std::floor(b / side);
+    if(!(f0 <= double(last)) || !(f1 >= double(first)))
+      return false;
+    x0 = f0 <= double(first) ? first : long(f0);
+    x1 = f1 >= double(last) ? last : long(f1);
+    return x0 <= x1;
   }
 
   // Calls f on the items of those lists.
