@@ -373,7 +373,7 @@ public:
   {
     SAI::Union_find sets;
     std::vector<std::uint32_t> dense, label;
-    std::vector<double> size, cut, pair_weight;
+    std::vector<double> size, cut;
     std::vector<char> cut_at;
   };
 
@@ -403,53 +403,74 @@ public:
     c.score = cut_of_labelling(g, w.label, k, c.cut_edges, w.size, w.cut);
     c.weight = score_weight(c.score, m_o.score_weighting, g);
 
-    // The coarser levels: merge the k segments further, as the run did, and count for every cut
-    // edge the weight of the levels at which it is still cut.
-    // Segment cut weights between segments (k is small: a k x k table).
-    w.pair_weight.assign(k * k, 0.0);
-    for(std::uint32_t e : c.cut_edges) {
-      const std::uint32_t a = w.label[g.edge_source[e]], b = w.label[g.edge_target[e]];
-      w.pair_weight[a * k + b] += g.cut_cost[e];
-      w.pair_weight[b * k + a] += g.cut_cost[e];
+    coarse_levels(merges, head, k, c, w, out);
+  }
+
+private:
+  // The coarser levels of draw(): the k segments of `c` merged further, as the run did, down to
+  // two; every cut edge of `c` weighted by the levels at which it is still cut. Per segment the
+  // cut edges it touches (those between the two segments of a merge found from the shorter list,
+  // the lists then joined), and the score kept up to date: O(E log k) per sample, where a k x k
+  // table of cut weights took O(k^3) time and O(k^2) memory (the cow, 5804 faces, 4 samples on
+  // one thread: 2000 clusters 28.9 s -> 0.03 s, as many clusters as faces over 100 s -> 0.04 s).
+  void coarse_levels(const std::vector<SAI::Normalized_cut_clustering::Merge>& merges, std::size_t head,
+                     std::size_t k, const Sampled_cut& c, Workspace& w, Sample& out) const
+  {
+    const Dual_graph& g = m_g;
+    const double not_joined = -1;
+    std::vector<std::vector<std::uint32_t>> touching(k); // per segment, indices into c.cut_edges
+    for(std::size_t i = 0; i < c.cut_edges.size(); ++i) {
+      const std::uint32_t e = c.cut_edges[i];
+      touching[w.label[g.edge_source[e]]].push_back(std::uint32_t(i));
+      touching[w.label[g.edge_target[e]]].push_back(std::uint32_t(i));
     }
+    std::vector<double> weight_before_join(c.cut_edges.size(), not_joined);
     SAI::Union_find coarse(k);
     std::vector<double> level_size(w.size.begin(), w.size.begin() + std::ptrdiff_t(k));
     std::vector<double> level_cut(w.cut.begin(), w.cut.begin() + std::ptrdiff_t(k));
-    out.amounts.clear();
-    out.amounts.reserve(c.cut_edges.size());
-    for(std::uint32_t e : c.cut_edges)
-      out.amounts.emplace_back(e, c.weight);
-    out.total_weight = c.weight;
-    // Dense label of a cluster id (a surviving node id) of the top level.
-    auto top_label = [&](std::uint32_t node) { return w.label[node]; };
+    const auto term = [&](std::uint32_t x) { return level_size[x] > 0 ? level_cut[x] / level_size[x] : 0.0; };
+    double score = 0;
+    for(std::uint32_t x = 0; x < k; ++x)
+      score += term(x);
+    double levels = 0; // the weights of the levels after the top one, so far
     std::size_t clusters = k;
     for(std::size_t j = head; j < merges.size() && clusters > 2; ++j) {
-      const std::uint32_t a = coarse.find(top_label(merges[j].survivor));
-      const std::uint32_t b = coarse.find(top_label(merges[j].absorbed));
+      const std::uint32_t a = coarse.find(w.label[merges[j].survivor]);
+      const std::uint32_t b = coarse.find(w.label[merges[j].absorbed]);
       if(a == b)
         continue;
       // Merge b into a: sizes, cuts (the weight between them leaves both cuts).
+      std::vector<std::uint32_t>& shorter = touching[a].size() < touching[b].size() ? touching[a] : touching[b];
       double between = 0;
-      for(std::size_t x = 0; x < k; ++x)
-        for(std::size_t y = 0; y < k; ++y)
-          if(coarse.find(std::uint32_t(x)) == a && coarse.find(std::uint32_t(y)) == b)
-            between += w.pair_weight[x * k + y];
+      for(std::uint32_t i : shorter) {
+        const std::uint32_t e = c.cut_edges[i];
+        const std::uint32_t x = coarse.find(w.label[g.edge_source[e]]), y = coarse.find(w.label[g.edge_target[e]]);
+        if(weight_before_join[i] == not_joined && ((x == a && y == b) || (x == b && y == a))) {
+          weight_before_join[i] = levels;
+          between += g.cut_cost[e];
+        }
+      }
+      score -= term(a) + term(b);
       level_cut[a] = (std::max)(0.0, level_cut[a] + level_cut[b] - 2 * between);
       level_size[a] += level_size[b];
+      score += term(a);
       coarse.absorb(a, b);
       --clusters;
-      double score = 0;
-      for(std::uint32_t x = 0; x < k; ++x)
-        if(coarse.find(x) == x && level_size[x] > 0)
-          score += level_cut[x] / level_size[x];
-      const double weight = score_weight(score, m_o.score_weighting, g);
-      out.total_weight += weight;
-      for(auto& amount : out.amounts) {
-        const std::uint32_t e = amount.first;
-        if(coarse.find(w.label[g.edge_source[e]]) != coarse.find(w.label[g.edge_target[e]]))
-          amount.second += weight;
-      }
+      std::vector<std::uint32_t>& longer = &shorter == &touching[a] ? touching[b] : touching[a];
+      for(std::uint32_t i : shorter)
+        if(weight_before_join[i] == not_joined)
+          longer.push_back(i);
+      std::vector<std::uint32_t>().swap(shorter);
+      if(&longer != &touching[a])
+        touching[a].swap(longer);
+      levels += score_weight(score, m_o.score_weighting, g);
     }
+    out.amounts.clear();
+    out.amounts.reserve(c.cut_edges.size());
+    for(std::size_t i = 0; i < c.cut_edges.size(); ++i)
+      out.amounts.emplace_back(c.cut_edges[i],
+                               c.weight + (weight_before_join[i] == not_joined ? levels : weight_before_join[i]));
+    out.total_weight = c.weight + levels;
   }
 
 private:
