@@ -7,6 +7,7 @@
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <Shape_analysis_support/Input_checks.h>
 
 #include <algorithm>
 #include <cctype>
@@ -48,6 +49,13 @@ Input_mesh read_triangle_mesh(const std::string& path)
     throw Cli_error("cannot read '" + path + "': unknown mesh format '" + ext +
                     "' (use .off, .ply, .obj or .stl)");
 
+  if(ext == ".ply") {
+    try {
+      CGAL::Shape_analysis_support::check_ply_vertices(path);
+    } catch(const CGAL::Shape_analysis::Bad_input& e) {
+      throw Cli_error(std::string("cannot read '") + path + "'" + (e.what() + path.size()));
+    }
+  }
   Input_mesh result;
   std::vector<std::vector<std::size_t>> polygons;
   bool ok = false;
@@ -277,8 +285,11 @@ void Output_files::add_input(const std::string& path)
   m_inputs.emplace_back(resolved(path), path);
 }
 
-void Output_files::add_output(const std::string& path, const std::string& what)
+void Output_files::add_output(const std::string& path, const std::string& what,
+                              std::initializer_list<const char*> extensions)
 {
+  if(path.empty())
+    throw Usage_error("the " + what + " is given an empty file name");
   const std::string target = resolved(path);
   for(const auto& in : m_inputs)
     if(in.first == target)
@@ -286,6 +297,23 @@ void Output_files::add_output(const std::string& path, const std::string& what)
   for(const auto& out : m_outputs)
     if(out.first == target)
       throw Usage_error("'" + path + "' is given for two outputs");
+  std::error_code exists_error;
+  const bool any_name = fs::exists(path, exists_error) && !fs::is_regular_file(path, exists_error) &&
+                        !fs::is_directory(path, exists_error); // (/dev/null, /dev/stdout: any name)
+  if(any_name || extensions.size() == 0) {
+  } else if(extensions.size() == 1)
+    require_extension(path, *extensions.begin(), what);
+  else {
+    std::string ext = fs::path(path).extension().string(), allowed;
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    bool found = false;
+    for(const char* e : extensions) {
+      found = found || ext == e;
+      allowed += std::string(allowed.empty() ? "" : " or ") + e;
+    }
+    if(!found)
+      throw Usage_error("the " + what + " must be named " + allowed + " (got '" + path + "')");
+  }
   const fs::path dir = fs::path(target).parent_path();
   std::error_code ec;
   if(!fs::is_directory(dir, ec))

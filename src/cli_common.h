@@ -18,6 +18,7 @@
 #include <array>
 #include <chrono>
 #include <functional>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -94,14 +95,17 @@ public:
 
   // Declares an input file: no output may be written over it.
   void add_input(const std::string& path);
-  // Declares an output before any work: checks that its directory exists and is writable and
-  // that it is neither an input nor another output. Throws Cli_error / Usage_error otherwise.
-  void add_output(const std::string& path, const std::string& what);
+  // Declares an output before any work: checks that it has one of `extensions` (when given,
+  // case-insensitive, e.g. {".ply", ".las"}), that its directory exists and is writable and that
+  // it is neither an input nor another output. Throws Cli_error / Usage_error otherwise.
+  void add_output(const std::string& path, const std::string& what,
+                  std::initializer_list<const char*> extensions = {});
   // The same for an output that was not asked for when `path` is empty (then nothing happens).
-  void add_optional_output(const std::string& path, const std::string& what)
+  void add_optional_output(const std::string& path, const std::string& what,
+                           std::initializer_list<const char*> extensions = {})
   {
     if(!path.empty())
-      add_output(path, what);
+      add_output(path, what, extensions);
   }
 
   // Writes the content produced by `writer` into a temporary file for the declared `path`.

@@ -236,9 +236,9 @@ int run_coseg(const Coseg_command_options& o)
     seg_paths[i] = (fs::path(o.output_dir) / (stems[i] + ".seg")).string();
     ply_paths[i] = (fs::path(o.output_dir) / (stems[i] + ".ply")).string();
     outputs.add_output(seg_paths[i], "labels");
-    outputs.add_output(ply_paths[i], "coloured mesh");
+    outputs.add_output(ply_paths[i], "coloured mesh", {".ply"});
   }
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_optional_output(o.report, "report", {".json"});
 
   // Meshes and label files.
   std::vector<Input_mesh> inputs(m);

@@ -198,9 +198,9 @@ int run_partition(const Partition_options& o)
   Progress progress("partition", o.quiet, o.verbose);
   Output_files outputs;
   outputs.add_input(o.input);
-  outputs.add_optional_output(o.output_ply, "coloured mesh");
+  outputs.add_optional_output(o.output_ply, "coloured mesh", {".ply"});
   outputs.add_optional_output(o.edge_values, "edge values");
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_optional_output(o.report, "report", {".json"});
 
   double read_seconds = 0;
   Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
@@ -297,9 +297,9 @@ int run_partition_segment(const Partition_segment_options& o)
   Progress progress("partition-segment", o.quiet, o.verbose);
   Output_files outputs;
   outputs.add_input(o.input);
-  outputs.add_optional_output(o.output_ply, "coloured mesh");
+  outputs.add_optional_output(o.output_ply, "coloured mesh", {".ply"});
   outputs.add_optional_output(o.output_seg, "labels");
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_optional_output(o.report, "report", {".json"});
 
   double read_seconds = 0;
   Input_mesh input = read_input_mesh(o.input, progress, read_seconds);

@@ -80,16 +80,14 @@ int run_scene(const Scene_options& o)
   Stopwatch total;
   Progress progress("points " + o.command, o.quiet, o.verbose);
   Output_files outputs;
-  require_extension(o.output, ".ply", "scanned scene");
-  outputs.add_output(o.output, "scanned scene");
+  outputs.add_output(o.output, "scanned scene", {".ply"});
   if(!o.objects.empty()) {
-    require_extension(o.objects, ".json", "ground-truth objects");
-    outputs.add_output(o.objects, "ground-truth objects");
+    outputs.add_output(o.objects, "ground-truth objects", {".json"});
   }
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_optional_output(o.report, "report", {".json"});
 #ifdef CGAL_SHAPE_ANALYSIS_USE_OSMIUM
   if(!o.streets.empty())
-    outputs.add_output(o.streets, "street map");
+    outputs.add_output(o.streets, "street map", {".osm"});
   const CGAL::Point_set_object_recognition::Utm_zone zone = [&] {
     try {
       return CGAL::Point_set_object_recognition::parse_utm_crs(o.crs);
@@ -221,9 +219,8 @@ int run_background(const Background_options& o)
   Progress progress("points background", o.quiet, o.verbose);
   Output_files outputs;
   outputs.add_input(o.input);
-  require_extension(o.output, ".ply", "output point cloud");
-  outputs.add_output(o.output, "output point cloud");
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_output(o.output, "output point cloud", {".ply"});
+  outputs.add_optional_output(o.report, "report", {".json"});
 
   progress.stage("reading " + o.input);
   Stopwatch reading;
@@ -346,11 +343,8 @@ int run_locate(const Locate_options& o)
   if(!o.truth.empty())
     outputs.add_input(o.truth);
   const bool csv = has_extension(o.output, ".csv");
-  if(!csv && !has_extension(o.output, ".json"))
-    throw Usage_error("the locations must be written to a .csv file (x,y,z per line) or a .json file, not " +
-                      o.output);
-  outputs.add_output(o.output, "locations");
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_output(o.output, "locations", {".csv", ".json"});
+  outputs.add_optional_output(o.report, "report", {".json"});
   if(!(o.radius > 0))
     throw Usage_error("--radius must be positive");
 

@@ -178,8 +178,8 @@ int run_train(const Train_options& o)
     outputs.add_input(i);
   for(const std::string& l : o.labels)
     outputs.add_input(l);
-  outputs.add_output(o.output, "model");
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_output(o.output, "model", {".json"});
+  outputs.add_optional_output(o.report, "report", {".json"});
   if(o.labels.size() != o.inputs.size())
     throw Usage_error("give one --labels file per scan (" + std::to_string(o.inputs.size()) + " scans, " +
                       std::to_string(o.labels.size()) + " labels files)");
@@ -384,12 +384,11 @@ int run_recognize(const Recognize_options& o)
   if(!o.model.empty())
     outputs.add_input(o.model);
   require_objects_extension(o.output);
-  outputs.add_output(o.output, "segmented points");
+  outputs.add_output(o.output, "segmented points", {".ply", ".las"});
   if(!o.locations.empty()) {
-    require_extension(o.locations, ".csv", "locations");
-    outputs.add_output(o.locations, "locations");
+    outputs.add_output(o.locations, "locations", {".csv"});
   }
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_optional_output(o.report, "report", {".json"});
   PSOR::Recognize_objects_options ro = o.recognition;
   ro.localization_method = localization_method(o.method);
   ro.segmentation_method = segmentation_method(o.segmentation);

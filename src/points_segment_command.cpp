@@ -212,8 +212,8 @@ int run_segment(const Segment_options& o)
   outputs.add_input(o.input);
   outputs.add_input(o.locations);
   require_objects_extension(o.output);
-  outputs.add_output(o.output, "segmented points");
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_output(o.output, "segmented points", {".ply", ".las"});
+  outputs.add_optional_output(o.report, "report", {".json"});
   PSOR::Segment_objects_options so = o.segmentation;
   so.segmentation_method = segmentation_method(o.method);
   if(!(so.background_radius > 0) || !std::isfinite(so.background_radius))
@@ -332,7 +332,7 @@ int run_evaluate_recognition(const Evaluate_options& o)
   Output_files outputs;
   outputs.add_input(o.labels);
   outputs.add_input(o.locations);
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_optional_output(o.report, "report", {".json"});
   if(o.locations.empty() || !o.objects.empty() || !o.truth.empty())
     throw Usage_error("--labels goes with --locations (a locations.csv of 'points recognize --model') alone");
   if(!(o.radius > 0) || !std::isfinite(o.radius))
@@ -362,7 +362,7 @@ int run_evaluate(const Evaluate_options& o)
     outputs.add_input(o.locations);
   if(!o.objects.empty())
     outputs.add_input(o.objects);
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_optional_output(o.report, "report", {".json"});
   if(o.locations.empty() && o.objects.empty())
     throw Usage_error("give --locations, --objects or both");
   if(!(o.radius > 0) || !std::isfinite(o.radius))

@@ -44,10 +44,9 @@ int run_register(const Register_options& o)
   outputs.add_input(o.source);
   outputs.add_input(o.target);
   if(!o.output_off.empty()) {
-    require_extension(o.output_off, ".off", "aligned mesh");
-    outputs.add_output(o.output_off, "aligned mesh");
+    outputs.add_output(o.output_off, "aligned mesh", {".off"});
   }
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_optional_output(o.report, "report", {".json"});
 
   double read_source = 0, read_target = 0;
   const Input_mesh source = read_input_mesh(o.source, progress, read_source);

@@ -37,9 +37,9 @@ int run_segment(const Segment_options& o)
   outputs.add_input(o.input);
   if(!o.prior.empty())
     outputs.add_input(o.prior);
-  outputs.add_optional_output(o.output_ply, "coloured mesh");
+  outputs.add_optional_output(o.output_ply, "coloured mesh", {".ply"});
   outputs.add_optional_output(o.output_seg, "labels");
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_optional_output(o.report, "report", {".json"});
 
   double read_seconds = 0;
   Input_mesh input = read_input_mesh(o.input, progress, read_seconds);

@@ -23,6 +23,21 @@ std::string one_line(std::string s)
   return s;
 }
 
+// The first option of the parsed command line given an empty value ("-o ''"), or null: an
+// empty file name or number is never meant, and would otherwise read as "not given".
+const CLI::Option* option_with_empty_value(const CLI::App& app)
+{
+  for(const CLI::Option* o : app.get_options())
+    if(o->count() > 0 && o->get_expected_min() > 0)
+      for(const std::string& r : o->results())
+        if(r.empty())
+          return o;
+  for(const CLI::App* sub : app.get_subcommands())
+    if(const CLI::Option* o = option_with_empty_value(*sub))
+      return o;
+  return nullptr;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -51,6 +66,10 @@ int main(int argc, char** argv)
   } catch(const CLI::ParseError& e) {
     std::cerr << "shape_analysis: error: " << one_line(e.what())
               << " (see shape_analysis --help)" << std::endl;
+    return 2;
+  }
+  if(const CLI::Option* o = option_with_empty_value(app)) {
+    std::cerr << "shape_analysis: error: " << o->get_name() << " is given an empty value" << std::endl;
     return 2;
   }
 

@@ -69,10 +69,9 @@ int run_detect(const Detect_options& o)
   Output_files outputs;
   outputs.add_input(o.input);
   if(!o.output_ply.empty()) {
-    require_extension(o.output_ply, ".ply", "support mesh");
-    outputs.add_output(o.output_ply, "support mesh");
+    outputs.add_output(o.output_ply, "support mesh", {".ply"});
   }
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_optional_output(o.report, "report", {".json"});
   double read_seconds = 0;
   const Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
   progress.stage("detecting reflective symmetries of " + std::to_string(num_faces(input.mesh)) + " faces");
@@ -136,11 +135,10 @@ int run_symmetrize(const Symmetrize_command_options& o)
   if(!o.plane.empty())
     parse_plane(o.plane); // a bad plane costs nothing
   if(!o.output_off.empty()) {
-    require_extension(o.output_off, ".off", "symmetrized mesh");
-    outputs.add_output(o.output_off, "symmetrized mesh");
+    outputs.add_output(o.output_off, "symmetrized mesh", {".off"});
   }
   outputs.add_optional_output(o.map, "symmetric map");
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_optional_output(o.report, "report", {".json"});
   double read_seconds = 0;
   Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
   Stopwatch watch;
@@ -186,9 +184,8 @@ int run_enhance(const Enhance_options& o)
     if(!o.plane.empty())
       throw Usage_error("give either --symmetric or --plane, not both");
   }
-  require_extension(o.output_off, ".off", "enhanced mesh");
-  outputs.add_output(o.output_off, "enhanced mesh");
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_output(o.output_off, "enhanced mesh", {".off"});
+  outputs.add_optional_output(o.report, "report", {".json"});
   double read_seconds = 0;
   Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
   Stopwatch watch;
@@ -264,9 +261,8 @@ int run_transfer(const Transfer_options& o)
   outputs.add_input(colour_file);
   if(!o.plane.empty())
     parse_plane(o.plane);
-  require_extension(o.output_ply, ".ply", "coloured mesh");
-  outputs.add_output(o.output_ply, "coloured mesh");
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_output(o.output_ply, "coloured mesh", {".ply"});
+  outputs.add_optional_output(o.report, "report", {".json"});
   double read_seconds = 0;
   const Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
   // The file's vertex count (before duplicate points were merged).

@@ -80,9 +80,8 @@ Input_mesh prepare(const Remesh_options& o, Output_files& outputs, Progress& pro
   outputs.add_input(o.input);
   if(!o.plane.empty())
     parse_plane(o.plane);
-  require_extension(o.output_off, ".off", "output mesh");
-  outputs.add_output(o.output_off, "output mesh");
-  outputs.add_optional_output(o.report, "report");
+  outputs.add_output(o.output_off, "output mesh", {".off"});
+  outputs.add_optional_output(o.report, "report", {".json"});
   Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
   symmetry = symmetry_of(o, input.mesh, progress, detect_seconds, detected);
   return input;

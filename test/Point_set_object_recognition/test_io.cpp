@@ -679,7 +679,11 @@ TEST_F(Io, BadFilesAreRefusedWithClearMessages)
   save_text(path("words.xyz"), "1 2 3\nthis is not a point\n");
   expect_bad_input(read(path("words.xyz")), "cannot read the file as XYZ");
   save_text(path("bad.ply"), "ply\nformat ascii 1.0\nelement vertex 2\nproperty double x\n");
-  expect_bad_input(read(path("bad.ply")), "cannot read the file as PLY");
+  expect_bad_input(read(path("bad.ply")), "no 'end_header' line");
+  // CGAL's reader would give every point the origin: the vertices need x, y and z.
+  save_text(path("uvw.ply"), "ply\nformat ascii 1.0\nelement vertex 2\nproperty double u\nproperty double v\n"
+                             "property double w\nend_header\n1 2 3\n4 5 6\n");
+  expect_bad_input(read(path("uvw.ply")), "no 'x' property");
   EXPECT_TRUE(ps.empty());
 }
 

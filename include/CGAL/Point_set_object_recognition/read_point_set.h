@@ -9,6 +9,7 @@
 #include <CGAL/Point_set_object_recognition/internal/Kitti_io.h>
 #include <CGAL/Point_set_object_recognition/internal/Las_io.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/internal/Ply_header.h>
 #include <CGAL/Shape_analysis/parameters.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -200,6 +201,8 @@ std::array<double, 3> read_with_cgal(const std::string& filename, bool ply, CGAL
   typedef typename CGAL::Kernel_traits<Point>::Kernel::FT FT;
   if(!std::ifstream(filename))
     throw Bad_input(filename + ": cannot open the file for reading");
+  if(ply)
+    CGAL::Shape_analysis::internal::read_ply_header(filename); // (throws without x, y, z)
   const bool ok = ply ? CGAL::IO::read_PLY(filename, points) : CGAL::IO::read_XYZ(filename, points);
   if(!ok)
     throw Bad_input(filename + (ply ? ": cannot read the file as PLY" : ": cannot read the file as XYZ (lines 'x y z [nx ny nz]')"));
@@ -286,7 +289,8 @@ gives the coordinates of the file.
 \returns the number of points, the format, the local origin subtracted and the property names
 
 \throws CGAL::Shape_analysis::Bad_input with a one-line message if the file cannot be opened or
-        read, has an unknown extension, is compressed LAZ, is truncated or inconsistent (LAS
+        read, has an unknown extension, is compressed LAZ, is a PLY file whose vertices lack an
+        x, y or z property, is truncated or inconsistent (LAS
         signature, version, point data format, record length, point count and file size), holds
         no points or a coordinate that is not finite, or if the parameters contradict each other
 */
