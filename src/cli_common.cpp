@@ -23,6 +23,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -31,18 +32,23 @@ namespace shape_analysis_cli {
 namespace fs = std::filesystem;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-Input_mesh read_triangle_mesh(const std::string& path)
+void check_input_file(const std::string& path)
 {
   std::error_code ec;
   if(!fs::exists(path, ec))
     throw Cli_error("cannot read '" + path + "': no such file");
   if(fs::is_directory(path, ec))
     throw Cli_error("cannot read '" + path + "': it is a directory");
-  {
-    std::ifstream probe(path, std::ios::binary);
-    if(!probe)
-      throw Cli_error("cannot read '" + path + "': permission denied or unreadable");
-  }
+  if(!fs::is_regular_file(path, ec))
+    throw Cli_error("cannot read '" + path + "': not a regular file (a device or a pipe)");
+  std::ifstream probe(path, std::ios::binary);
+  if(!probe)
+    throw Cli_error("cannot read '" + path + "': permission denied or unreadable");
+}
+
+Input_mesh read_triangle_mesh(const std::string& path)
+{
+  check_input_file(path);
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if(ext != ".off" && ext != ".ply" && ext != ".obj" && ext != ".stl")
@@ -56,6 +62,11 @@ Input_mesh read_triangle_mesh(const std::string& path)
       throw Cli_error(std::string("cannot read '") + path + "'" + (e.what() + path.size()));
     }
   }
+  if(ext == ".obj") {
+    const std::string why = CGAL::Shape_analysis_support::check_obj_faces(path);
+    if(!why.empty())
+      throw Cli_error("cannot read '" + path + "': " + why);
+  }
   Input_mesh result;
   std::vector<std::vector<std::size_t>> polygons;
   bool ok = false;
@@ -64,9 +75,11 @@ Input_mesh read_triangle_mesh(const std::string& path)
   } catch(const std::exception&) {
     ok = false;
   }
-  if(!ok)
-    throw Cli_error("cannot read '" + path + "': not a valid " + ext.substr(1) +
-                    " mesh file (or a coordinate that is not a number)");
+  if(!ok) {
+    const std::string why = ext == ".off" ? CGAL::Shape_analysis_support::diagnose_off(path) : std::string();
+    throw Cli_error("cannot read '" + path + "': " +
+                    (why.empty() ? "not a valid " + ext.substr(1) + " mesh file (or a coordinate that is not a number)" : why));
+  }
   if(polygons.empty())
     throw Cli_error("'" + path + "' has no faces");
   const std::vector<Point_3>& points = result.points;
@@ -75,6 +88,11 @@ Input_mesh read_triangle_mesh(const std::string& path)
     if(!std::isfinite(points[v].x()) || !std::isfinite(points[v].y()) || !std::isfinite(points[v].z()))
       throw Cli_error("'" + path + "': vertex " + std::to_string(v) +
                       " has a coordinate that is not a finite number");
+  // The reports' areas and lengths are in the mesh's units: their squares must stay finite.
+  for(std::size_t v = 0; v < points.size(); ++v)
+    if(!(std::abs(points[v].x()) <= 1e150 && std::abs(points[v].y()) <= 1e150 && std::abs(points[v].z()) <= 1e150))
+      throw Cli_error("'" + path + "': vertex " + std::to_string(v) +
+                      " has a coordinate above 1e150 in magnitude (areas would overflow); scale the mesh");
   for(std::size_t i = 0; i < polygons.size(); ++i) {
     const auto& p = polygons[i];
     if(p.size() != 3)
@@ -202,6 +220,7 @@ std::vector<std::size_t> Input_mesh::input_labels(const std::vector<std::size_t>
 
 std::vector<long long> read_labels(const std::string& path)
 {
+  check_input_file(path);
   std::ifstream in(path);
   if(!in)
     throw Cli_error("cannot read '" + path + "': no such file or unreadable");
@@ -298,6 +317,8 @@ void Output_files::add_output(const std::string& path, const std::string& what,
     if(out.first == target)
       throw Usage_error("'" + path + "' is given for two outputs");
   std::error_code exists_error;
+  if(fs::is_directory(target, exists_error))
+    throw Cli_error("cannot write the " + what + " '" + path + "': it is a directory");
   const bool any_name = fs::exists(path, exists_error) && !fs::is_regular_file(path, exists_error) &&
                         !fs::is_directory(path, exists_error); // (/dev/null, /dev/stdout: any name)
   if(any_name || extensions.size() == 0) {
@@ -363,16 +384,49 @@ void Output_files::stage(const std::string& path, bool binary,
 
 void Output_files::commit()
 {
-  for(const auto& s : m_staged) {
-    if(s.special) {
-      std::ifstream in(s.temporary, std::ios::binary);
-      std::ofstream out(s.target, std::ios::binary);
-      if(!out || !(out << in.rdbuf()) || !out.flush())
-        throw Cli_error("cannot write '" + s.shown + "'");
-      std::error_code ec;
-      fs::remove(s.temporary, ec);
-      continue;
+  // Two runs writing the same outputs commit one after the other, never mixed: an exclusive lock
+  // on every output directory (in a fixed order) while the set is committed.
+  std::vector<std::string> dirs;
+  for(const auto& s : m_staged)
+    if(!s.special)
+      dirs.push_back(fs::path(s.target).parent_path().string());
+  std::sort(dirs.begin(), dirs.end());
+  dirs.erase(std::unique(dirs.begin(), dirs.end()), dirs.end());
+  std::vector<int> locks;
+  struct Unlock
+  {
+    std::vector<int>& fds;
+    ~Unlock()
+    {
+      for(int fd : fds)
+        ::close(fd); // (releases the lock)
     }
+  } unlock{locks};
+  for(const std::string& d : dirs) {
+    const int fd = ::open(d.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if(fd >= 0) {
+      locks.push_back(fd);
+      while(::flock(fd, LOCK_EX) != 0 && errno == EINTR) {
+      }
+    }
+  }
+  // Special files (a device, a pipe) first: they are the ones that can still fail (a full
+  // device), and the regular files are renamed only once all of them took their content, so
+  // that a failure leaves none of the new set.
+  for(const auto& s : m_staged) {
+    if(!s.special)
+      continue;
+    std::ifstream in(s.temporary, std::ios::binary);
+    errno = 0;
+    std::ofstream out(s.target, std::ios::binary);
+    if(!out || !(out << in.rdbuf()) || !out.flush())
+      throw Cli_error("cannot write '" + s.shown + "'" + (errno ? std::string(": ") + std::strerror(errno) : ""));
+    std::error_code ec;
+    fs::remove(s.temporary, ec);
+  }
+  for(const auto& s : m_staged) {
+    if(s.special)
+      continue;
     std::error_code ec;
     fs::rename(s.temporary, s.target, ec);
     if(ec)
@@ -473,6 +527,19 @@ double bounding_box_diagonal(const std::vector<Point_3>& points)
                dz = box.zmax() - box.zmin();
   return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
+
+const CLI::Validator positive_count(
+  [](std::string& text) {
+    std::size_t used = 0;
+    long long n = 0;
+    try {
+      n = std::stoll(text, &used);
+    } catch(const std::exception&) {
+      used = 0;
+    }
+    return used == text.size() && n > 0 ? std::string() : "must be a positive whole number (got " + text + ")";
+  },
+  "N > 0");
 
 void require_extension(const std::string& path, const std::string& extension, const std::string& what)
 {

@@ -148,6 +148,15 @@ void write_off(std::ostream& out, const std::vector<Point_3>& points,
 // The diagonal of the bounding box of `points` (0 when empty).
 double bounding_box_diagonal(const std::vector<Point_3>& points);
 
+// Checks that the input `path` can be read: Cli_error "cannot read 'path': no such file", "...: it
+// is a directory", "...: not a regular file" (a device or a pipe: the readers need a file) or
+// "...: permission denied".
+void check_input_file(const std::string& path);
+
+// A count option's check: a whole number >= 1, else "must be a positive whole number (got x)"
+// (CLI11's PositiveNumber names the largest double in its message).
+extern const CLI::Validator positive_count;
+
 // Checks that `path` ends with `extension` (case-insensitive, e.g. ".off"); Usage_error naming
 // `what` otherwise.
 void require_extension(const std::string& path, const std::string& extension, const std::string& what);

@@ -427,11 +427,11 @@ void add_coseg_command(CLI::App& app, std::function<int()>& run,
                   "JSON report (inputs, parameters, seconds, segments per mesh, correspondences)");
   cmd->add_option("-k,--segments", co.number_of_segments, "Number of segments over the whole set")
     ->capture_default_str()
-    ->check(CLI::PositiveNumber);
+    ->check(positive_count);
   cmd->add_option("--oversegments", co.number_of_oversegments,
                   "Number of segments of each mesh before the joint merging")
     ->capture_default_str()
-    ->check(CLI::PositiveNumber);
+    ->check(positive_count);
   cmd->add_option("--known", options->known,
                   "MESH=FILE.seg: known labels of a mesh (MESH: its path or file name; one "
                   "label per input face, -1 for unknown), kept and transferred (repeatable)")

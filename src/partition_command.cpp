@@ -78,7 +78,7 @@ void add_sampling_options(CLI::App* cmd, RC::Partition_function_options& so, Com
       ->default_str(method_name(so.sampling_method));
   cmd->add_option("-n,--samples", so.number_of_samples, "Number of sampled segmentations")
     ->capture_default_str()
-    ->check(CLI::PositiveNumber);
+    ->check(positive_count);
   cmd->add_option("--seed", so.random_seed, "Random seed (same seed, same result)")->capture_default_str();
   cmd->add_option("--part-size", so.part_size,
                   "mincut: part size s of the penalty near the two sampled faces, in (0, 1/6]")
@@ -375,7 +375,7 @@ void add_partition_commands(CLI::App& app, std::function<int()>& run)
     cmd->add_option("input", o->input, "Input triangle mesh (.off, .ply, .obj, .stl)")->required();
     cmd->add_option("-k,--segments", o->segmentation.number_of_segments, "Number of segments")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive_count);
     cmd->add_option("-o,--output", o->output_ply,
                     "Coloured mesh (.ply, one colour and an integer 'segment' per face)");
     cmd->add_option("--seg", o->output_seg,

@@ -500,6 +500,7 @@ void write_locations_csv(std::ostream& out, const std::vector<std::array<double,
 
 std::vector<Truth_object> read_truth_objects(const std::string& path)
 {
+  check_input_file(path);
   std::ifstream in(path);
   if(!in)
     throw Cli_error("cannot open " + path);

@@ -86,6 +86,7 @@ double finite_number(const std::string& cell, const std::string& where)
 
 Locations_file read_locations_file(const std::string& path)
 {
+  check_input_file(path);
   std::ifstream in(path);
   if(!in)
     throw Cli_error("cannot open " + path);

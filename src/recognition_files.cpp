@@ -42,6 +42,7 @@ const std::vector<std::pair<std::string, std::vector<std::string>>>& feature_gro
 
 std::vector<Labelled_object> read_labelled_csv(const std::string& path)
 {
+  check_input_file(path);
   std::ifstream in(path);
   if(!in)
     throw Cli_error("cannot open " + path);
@@ -341,6 +342,7 @@ CGAL::Point_set_object_recognition::Street_map read_streets(const std::string& o
 
 Recognition_model read_recognition_model(const std::string& path)
 {
+  check_input_file(path);
   std::ifstream in(path);
   if(!in)
     throw Cli_error("cannot open " + path);

@@ -144,11 +144,11 @@ void add_register_command(CLI::App& app, std::function<int()>& run)
                   "JSON report (inputs, parameters, seconds, RMS distance, scale, 4x4 matrix)");
   cmd->add_option("--points", ro.number_of_points, "Number of points sampled on each mesh (>= 10)")
     ->capture_default_str()
-    ->check(CLI::PositiveNumber);
+    ->check(positive_count);
   cmd->add_option("-n,--samples", ro.number_of_samples,
                   "Number of segmentations sampled for each partition function")
     ->capture_default_str()
-    ->check(CLI::PositiveNumber);
+    ->check(positive_count);
   cmd->add_option("--iterations", ro.number_of_iterations, "Largest number of ICP iterations per restart")
     ->capture_default_str();
   cmd->add_option("--overlap", ro.overlap,

@@ -132,7 +132,7 @@ void add_segment_command(CLI::App& app, std::function<int()>& run,
   cmd->add_option("input", options->input, "Input triangle mesh (.off, .ply, .obj, .stl)")->required();
   cmd->add_option("-k,--segments", so.number_of_segments, "Number of segments")
     ->capture_default_str()
-    ->check(CLI::PositiveNumber);
+    ->check(positive_count);
   cmd->add_option("-o,--output", options->output_ply,
                   "Coloured mesh (.ply, one colour and an integer 'segment' per face)");
   cmd->add_option("--seg", options->output_seg,

@@ -8,6 +8,7 @@
 
 #include <CGAL/Shape_analysis/Bad_input.h>
 
+#include <algorithm>
 #include <iostream>
 #include <string>
 
@@ -38,6 +39,59 @@ const CLI::Option* option_with_empty_value(const CLI::App& app)
   return nullptr;
 }
 
+// The first value of an unsigned option that is not a whole number >= 0 within 64 bits, as a
+// message ("--seed -3" would otherwise wrap around to 18446744073709551613, and an overflow read
+// as the largest value), or an empty string.
+std::string bad_unsigned_value(const CLI::App& app)
+{
+  for(const CLI::Option* o : app.get_options()) {
+    if(o->count() == 0 || o->get_type_name().compare(0, 4, "UINT") != 0)
+      continue;
+    for(const std::string& r : o->results()) {
+      const bool digits = !r.empty() && r.find_first_not_of("0123456789") == std::string::npos;
+      if(!digits)
+        return o->get_name() + ": '" + r + "' is not a whole number >= 0";
+      const std::size_t first = (std::min)(r.find_first_not_of('0'), r.size());
+      if(r.size() - first > 20 || (r.size() - first == 20 && r.compare(first, 20, "18446744073709551615") > 0))
+        return o->get_name() + ": " + r + " is too large (at most 18446744073709551615)";
+    }
+  }
+  for(const CLI::App* sub : app.get_subcommands()) {
+    const std::string m = bad_unsigned_value(*sub);
+    if(!m.empty())
+      return m;
+  }
+  return std::string();
+}
+
+// A message for a word of the command line that should name a subcommand and does not
+// ("shape_analysis frobnicate", "shape_analysis points frobnicate"), or an empty string.
+std::string unknown_subcommand(CLI::App& app, int argc, char** argv)
+{
+  CLI::App* current = &app;
+  std::string path = "shape_analysis";
+  for(int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if(word.empty() || word[0] == '-')
+      return std::string();
+    CLI::App* sub = nullptr;
+    for(CLI::App* s : current->get_subcommands({}))
+      if(s->check_name(word))
+        sub = s;
+    if(sub == nullptr) {
+      if(current->get_require_subcommand_min() == 0)
+        return std::string();
+      std::string names;
+      for(CLI::App* s : current->get_subcommands({}))
+        names += (names.empty() ? "" : ", ") + s->get_name();
+      return "unknown subcommand '" + word + "' of " + path + " (one of: " + names + ")";
+    }
+    current = sub;
+    path += " " + sub->get_name();
+  }
+  return std::string();
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -55,6 +109,11 @@ int main(int argc, char** argv)
   add_symmetry_command(app, run);
   add_points_command(app, run);
 
+  const std::string unknown = unknown_subcommand(app, argc, argv);
+  if(!unknown.empty()) {
+    std::cerr << "shape_analysis: error: " << unknown << " (see shape_analysis --help)" << std::endl;
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch(const CLI::CallForHelp& e) {
@@ -66,6 +125,11 @@ int main(int argc, char** argv)
   } catch(const CLI::ParseError& e) {
     std::cerr << "shape_analysis: error: " << one_line(e.what())
               << " (see shape_analysis --help)" << std::endl;
+    return 2;
+  }
+  const std::string bad_number = bad_unsigned_value(app);
+  if(!bad_number.empty()) {
+    std::cerr << "shape_analysis: error: " << bad_number << std::endl;
     return 2;
   }
   if(const CLI::Option* o = option_with_empty_value(app)) {

@@ -18,6 +18,8 @@
 #include <CGAL/IO/polygon_soup_io.h>
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -226,8 +228,12 @@ int run_enhance(const Enhance_options& o)
 std::vector<CGAL::IO::Color> read_vertex_colours(const std::string& path, std::size_t expected,
                                                  std::size_t merged)
 {
-  if(!std::ifstream(path, std::ios::binary))
-    throw Cli_error("cannot read '" + path + "': no such file or unreadable");
+  check_input_file(path);
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if(ext != ".ply")
+    throw Cli_error("the vertex colours are read from a PLY file, not '" + path +
+                    "': give the input as .ply or the colours with --colors FILE.ply");
   std::vector<Point_3> points;
   std::vector<std::vector<std::size_t>> polygons;
   std::vector<CGAL::IO::Color> colours, face_colours;

@@ -198,19 +198,6 @@ int run_decimate(const Remesh_options& o)
   return 0;
 }
 
-// --faces: a positive whole number.
-const CLI::Validator positive_count(
-  [](std::string& text) {
-    std::size_t used = 0;
-    long long n = 0;
-    try {
-      n = std::stoll(text, &used);
-    } catch(const std::exception&) {
-      used = 0;
-    }
-    return used == text.size() && n > 0 ? std::string() : "must be a positive whole number (got " + text + ")";
-  },
-  "N > 0");
 
 } // namespace
 

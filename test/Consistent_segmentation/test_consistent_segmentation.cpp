@@ -744,7 +744,19 @@ TEST(BadInput, SetsAndMeshesThatCannotBeSegmented)
   nan[0].point(*vertices(nan[0]).begin()) = Point(std::nan(""), 0, 0);
   std::vector<Id_map> nan_maps = id_maps(nan);
   expect_bad_input([&] { CS::consistent_segmentation(nan, nan_maps); }, "finite");
+  // More segments than the set has faces (it gave fewer segments without a word).
+  std::size_t faces_in_all = 0;
+  for(const Mesh& m : meshes)
+    faces_in_all += num_faces(m);
+  expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, CS::parameters::number_of_segments(faces_in_all + 1)); },
+                   "exceeds the number of faces");
+  // A symmetry plane beside the mesh (it segmented as if it were a symmetry); a normal of 1e-300
+  // is a plane, not a zero normal.
+  expect_bad_input([&] { CS::symmetric_segmentation(meshes[0], Kernel::Plane_3(0, 0, 1, 1000), maps[0]); },
+                   "does not cross the mesh");
   EXPECT_TRUE(untouched());
+  EXPECT_NO_THROW(CS::symmetric_segmentation(meshes[0], Kernel::Plane_3(1e-300, 0, 0, 0), maps[0],
+                                             CS::parameters::number_of_segments(2)));
 }
 
 TEST(BadInput, ParametersOutOfRange)

@@ -677,7 +677,14 @@ TEST_F(Io, BadFilesAreRefusedWithClearMessages)
   save_text(path("empty.xyz"), "");
   expect_bad_input(read(path("empty.xyz")), "no points");
   save_text(path("words.xyz"), "1 2 3\nthis is not a point\n");
-  expect_bad_input(read(path("words.xyz")), "cannot read the file as XYZ");
+  expect_bad_input(read(path("words.xyz")), "line 2: expected 'x y z'");
+  save_text(path("nan.xyz"), "# a comment\n1 2 3\n\n4 nan 6\n");
+  expect_bad_input(read(path("nan.xyz")), "line 4: 'nan' is not a finite number");
+  save_text(path("nan_ascii.ply"), "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+                                   "property float z\nend_header\n1 2 3\n4 5 inf\n");
+  expect_bad_input(read(path("nan_ascii.ply")), "vertex 1: 'inf' is not a finite number");
+  std::filesystem::create_directories(path("folder.ply"));
+  expect_bad_input(read(path("folder.ply")), "is a directory");
   save_text(path("bad.ply"), "ply\nformat ascii 1.0\nelement vertex 2\nproperty double x\n");
   expect_bad_input(read(path("bad.ply")), "no 'end_header' line");
   // CGAL's reader would give every point the origin: the vertices need x, y and z.

@@ -774,6 +774,15 @@ TEST(BadInput, RefusedWithAReason)
   }
   EXPECT_THROW(SY::detect_reflective_symmetries(flat, std::back_inserter(out)), Bad_input);
 
+  // A plane beside the mesh: no mirror to map or to symmetrize onto.
+  Mesh blob = to_mesh(SAS::symmetric_blob(8, 8));
+  const Symmetry beside = SY::reflective_symmetry<Kernel>(Plane(0, 1, 0, 1000));
+  EXPECT_THROW(SY::compute_symmetric_map(blob, beside), Bad_input);
+  EXPECT_THROW(SY::symmetrize(blob, std::vector<Symmetry>{beside}), Bad_input);
+  // A normal of 1e-300 is a direction, not zero (its square underflowed).
+  const Symmetry tiny = SY::reflective_symmetry<Kernel>(Plane(0, 1e-300, 0, 0));
+  EXPECT_DOUBLE_EQ(CGAL::to_double(tiny.plane.b()), 1.0);
+
   // Degenerate planes and transformations.
   EXPECT_THROW(SY::reflective_symmetry<Kernel>(Plane(0, 0, 0, 1)), Bad_input);
   EXPECT_THROW(SY::reflective_symmetry<Kernel>(Plane(std::nan(""), 1, 0, 0)), Bad_input);

@@ -346,8 +346,9 @@ results that do not depend on the number of threads.
 \throws CGAL::Shape_analysis::Bad_input if `meshes` is empty, if the number of face segment maps
         (or of vertex point maps, known or prior segment maps) differs from the number of meshes,
         if a mesh has no faces, a face that is not a triangle, a coordinate that is not finite or
-        no area, if a known label is above \f$2^{20}-1\f$, or if a parameter is out of its range;
-        no map is written then.
+        no area, if a known label is above \f$2^{20}-1\f$, if `number_of_segments` exceeds the
+        number of faces of all the meshes, or if a parameter is out of its range; no map is
+        written then.
 
 \sa `hierarchical_segmentation()`, `symmetric_segmentation()`
 */
@@ -449,7 +450,8 @@ canonical pose).
          are the mirror links; no pair of meshes is aligned)
 
 \throws CGAL::Shape_analysis::Bad_input on a mesh or a parameter that `consistent_segmentation()`
-        refuses, or a degenerate plane; `face_segment_map` is then left untouched.
+        refuses, or a plane that is degenerate or does not cross the mesh (all of the mesh on one
+        side); `face_segment_map` is then left untouched.
 */
 template <typename TriangleMesh, typename Plane_3, typename FaceSegmentMap,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -466,8 +468,16 @@ Consistent_segmentation_result symmetric_segmentation(const TriangleMesh& tm, co
   const Consistent_segmentation_options options = consistent_segmentation_options(np);
   internal::check_coseg_options(options, who);
 
-  const double a = CGAL::to_double(plane.a()), b = CGAL::to_double(plane.b()),
-               c = CGAL::to_double(plane.c()), d = CGAL::to_double(plane.d());
+  double a = CGAL::to_double(plane.a()), b = CGAL::to_double(plane.b()), c = CGAL::to_double(plane.c()),
+         d = CGAL::to_double(plane.d());
+  // Divided by a power of two near the largest of |a|, |b|, |c| (exact): 0,0,1e-300,0 is z = 0.
+  const double largest = (std::max)((std::max)(std::abs(a), std::abs(b)), std::abs(c));
+  if(largest > 0 && std::isfinite(largest)) {
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    a = std::ldexp(a, -exponent), b = std::ldexp(b, -exponent), c = std::ldexp(c, -exponent);
+    d = std::ldexp(d, -exponent);
+  }
   const double length = std::sqrt(a * a + b * b + c * c);
   if(!(length > 0) || !std::isfinite(length) || !std::isfinite(d))
     throw Bad_input(who + ": the symmetry plane is degenerate (its normal is zero or not finite)");

@@ -8,6 +8,7 @@
 
 #include <CGAL/Point_set_object_recognition/internal/Kitti_io.h>
 #include <CGAL/Point_set_object_recognition/internal/Las_io.h>
+#include <CGAL/Point_set_object_recognition/internal/Text_points_io.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
 #include <CGAL/Shape_analysis/internal/Ply_header.h>
 #include <CGAL/Shape_analysis/parameters.h>
@@ -15,13 +16,13 @@
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO/PLY.h>
-#include <CGAL/Point_set_3/IO/XYZ.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <string>
@@ -193,19 +194,41 @@ void add_extra_property(CGAL::Point_set_3<Point>& points, const Las_extra_bytes&
     add(0.0);
 }
 
-// Reads a PLY or XYZ file with CGAL's readers, then shifts the points to their local origin.
+// Reads an XYZ file (read_xyz()), shifted to its local origin; normals when every line has them.
 template <typename Point>
-std::array<double, 3> read_with_cgal(const std::string& filename, bool ply, CGAL::Point_set_3<Point>& points,
-                                     const Read_point_set_options& options)
+std::array<double, 3> read_xyz_points(const std::string& filename, CGAL::Point_set_3<Point>& points,
+                                      const Read_point_set_options& options)
+{
+  typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector;
+  const Xyz_points d = read_xyz(filename);
+  std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
+  bounding_box(d.xyz, lo, hi);
+  const std::array<double, 3> o = choose_local_origin(options, lo, hi);
+  add_points(points, d.xyz, o);
+  if(!d.normals.empty()) {
+    points.add_normal_map();
+    std::size_t k = 0;
+    for(typename CGAL::Point_set_3<Point>::Index i : points) {
+      points.normal(i) = Vector(d.normals[k], d.normals[k + 1], d.normals[k + 2]);
+      k += 3;
+    }
+  }
+  return o;
+}
+
+// Reads a PLY file with CGAL's reader, then shifts the points to their local origin.
+template <typename Point>
+std::array<double, 3> read_ply_points(const std::string& filename, CGAL::Point_set_3<Point>& points,
+                                      const Read_point_set_options& options)
 {
   typedef typename CGAL::Kernel_traits<Point>::Kernel::FT FT;
   if(!std::ifstream(filename))
     throw Bad_input(filename + ": cannot open the file for reading");
-  if(ply)
-    CGAL::Shape_analysis::internal::read_ply_header(filename); // (throws without x, y, z)
-  const bool ok = ply ? CGAL::IO::read_PLY(filename, points) : CGAL::IO::read_XYZ(filename, points);
-  if(!ok)
-    throw Bad_input(filename + (ply ? ": cannot read the file as PLY" : ": cannot read the file as XYZ (lines 'x y z [nx ny nz]')"));
+  CGAL::Shape_analysis::internal::read_ply_header(filename); // (throws without x, y, z)
+  if(!CGAL::IO::read_PLY(filename, points)) {
+    const std::string why = diagnose_ascii_ply(filename);
+    throw Bad_input(why.empty() ? filename + ": cannot read the file as PLY" : why);
+  }
   std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
   std::vector<double> xyz;
   xyz.reserve(3 * points.size());
@@ -238,8 +261,10 @@ The format is chosen by the extension of `filename`, in any case:
 - `.ply`: \cgal's PLY reader (`CGAL::IO::read_PLY()`), ASCII or binary; normals become the normal
   map and every other vertex property becomes a property of the same name and type (for example
   `red`, `green`, `blue` as `unsigned char`, `label` as `int`).
-- `.xyz`, `.pts`, `.txt`: \cgal's XYZ reader, one point a line, `x y z` or `x y z nx ny nz`
-  (a first line holding only the number of points and lines starting with `#` are skipped).
+- `.xyz`, `.pts`, `.txt`: one point a line, `x y z` or `x y z nx ny nz` (normals when every line
+  has them; empty lines, lines starting with `#` and a first line holding only the number of
+  points are skipped); a line of another shape or a value that is not a finite number is an
+  error naming the line.
 - `.las`: uncompressed ASPRS LAS 1.0 to 1.4, point data formats 0 to 10. Properties: `intensity`
   (`unsigned short`), `classification`, `return_number`, `number_of_returns` (`unsigned char`),
   and where the format has them `gps_time` (`double`; formats 1, 3-10) and `red`, `green`, `blue`
@@ -289,7 +314,7 @@ gives the coordinates of the file.
 \returns the number of points, the format, the local origin subtracted and the property names
 
 \throws CGAL::Shape_analysis::Bad_input with a one-line message if the file cannot be opened or
-        read, has an unknown extension, is compressed LAZ, is a PLY file whose vertices lack an
+        read, is a directory or a device, has an unknown extension, is compressed LAZ, is a PLY file whose vertices lack an
         x, y or z property, is truncated or inconsistent (LAS
         signature, version, point data format, record length, point count and file size), holds
         no points or a coordinate that is not finite, or if the parameters contradict each other
@@ -325,10 +350,20 @@ Point_set_read_result read_point_set(const std::string& filename, CGAL::Point_se
                     "\" (.ply, .xyz, .pts, .txt, .las and .bin are read)");
 
   points.clear();
+  {
+    // The readers need a regular file: a folder would read as empty, a device (/dev/zero) forever.
+    std::error_code ec;
+    if(std::filesystem::is_directory(filename, ec))
+      throw Bad_input(who + filename + ": it is a directory");
+    if(std::filesystem::exists(filename, ec) && !std::filesystem::is_regular_file(filename, ec))
+      throw Bad_input(who + filename + ": not a regular file (a device or a pipe)");
+  }
   try {
     std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
-    if(result.format == "ply" || result.format == "xyz") {
-      result.offset = internal::read_with_cgal(filename, result.format == "ply", points, options);
+    if(result.format == "ply") {
+      result.offset = internal::read_ply_points(filename, points, options);
+    } else if(result.format == "xyz") {
+      result.offset = internal::read_xyz_points(filename, points, options);
     } else if(result.format == "las") {
       const internal::Las_data d = internal::read_las(filename);
       internal::bounding_box(d.xyz, lo, hi);

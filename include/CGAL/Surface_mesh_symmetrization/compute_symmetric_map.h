@@ -96,6 +96,24 @@ inline Mirror_point public_mirror(const Mirror& m)
   return p;
 }
 
+// Bad_input unless the plane of `symmetry`, a reflection, has points of `surface` on both of its
+// sides (a plane beside the mesh maps it onto nothing of itself; the symmetrization would flatten
+// it onto the plane). Nothing for other symmetries.
+template <typename Kernel>
+void check_plane_crosses(const Surface& surface, const Symmetry<Kernel>& symmetry, const std::string& who)
+{
+  if(!symmetry.is_reflection)
+    return;
+  const Plane_3d plane = plane_of(symmetry, who);
+  bool positive = false, negative = false;
+  for(const Vector_3d& p : surface.points) {
+    const double d = plane.signed_distance(p);
+    positive = positive || d > 0, negative = negative || d < 0;
+  }
+  if(!positive || !negative)
+    throw Bad_input(who + ": the plane of a reflection does not cross the mesh (all of it lies on one side)");
+}
+
 // compute_symmetric_map() on a mesh already read.
 template <typename Kernel>
 std::vector<Mirror_point> symmetric_map(const Surface& surface, const Symmetry<Kernel>& symmetry,
@@ -105,6 +123,7 @@ std::vector<Mirror_point> symmetric_map(const Surface& surface, const Symmetry<K
   if(!(area > 0) || !std::isfinite(area))
     throw Bad_input(who + ": the mesh has no area");
   const Affine_3d t = affine_of(symmetry, who);
+  check_plane_crosses(surface, symmetry, who);
   const Surface_index index(surface);
   const auto mirrors = mirror_points(surface, index, {t.inverse()}, true, o.number_of_threads);
   std::vector<Mirror_point> result;
@@ -156,7 +175,7 @@ mirror points are exact; on a nearly symmetric one they are the natural correspo
 
 \throws CGAL::Shape_analysis::Bad_input if the mesh has no faces, a face that is not a triangle, a
         coordinate that is not finite or no area, or if the symmetry is not invertible or not
-        finite
+        finite, or is a reflection whose plane does not cross the mesh
 */
 template <typename TriangleMesh, typename Kernel,
           typename NamedParameters = parameters::Default_named_parameters>

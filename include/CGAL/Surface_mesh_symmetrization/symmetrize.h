@@ -118,16 +118,7 @@ std::vector<Solver_symmetry> solver_symmetries(const Surface& surface, const Sym
   for(const Symmetry<Kernel>& s : symmetries) {
     Solver_symmetry ss;
     ss.transform = affine_of(s, who);
-    if(s.is_reflection) { // a plane beside the mesh would flatten it onto the plane
-      const Plane_3d plane = plane_of(s, who);
-      bool positive = false, negative = false;
-      for(const Vector_3d& p : surface.points) {
-        const double d = plane.signed_distance(p);
-        positive = positive || d > 0, negative = negative || d < 0;
-      }
-      if(!positive || !negative)
-        throw Bad_input(who + ": the plane of a reflection does not cross the mesh (all of it lies on one side)");
-    }
+    check_plane_crosses(surface, s, who); // (a plane beside the mesh would flatten it onto the plane)
     if(weighting && !s.support.empty()) {
       if(s.support.size() != surface.number_of_faces())
         throw Bad_input(who + ": a symmetry's support has " + std::to_string(s.support.size()) +

@@ -198,8 +198,8 @@ Vertices without a mirror point keep their values. Values are read before any is
 
 \throws CGAL::Shape_analysis::Bad_input if the mesh cannot be read (see `symmetrize()`), if
         `Transfer_mode::COPY` is asked with a symmetry that is not a reflection, if
-        `source_side` is neither 1 nor -1, or if the symmetric map does not have one valid entry
-        per vertex
+        `source_side` is neither 1 nor -1, if the symmetry is a reflection whose plane does not
+        cross the mesh, or if the symmetric map does not have one valid entry per vertex
 
 \sa `compute_symmetric_map()`, `symmetrize()`
 */
@@ -223,6 +223,7 @@ void transfer_vertex_attribute(const TriangleMesh& tm, const Symmetry<Kernel>& s
     throw Bad_input(who + ": copying one side onto the other needs a reflection (use Transfer_mode::BLEND)");
 
   const internal::Mesh_arrays<TriangleMesh> mesh = internal::read_mesh_np(tm, np, who);
+  internal::check_plane_crosses(mesh.surface, symmetry, who);
   std::vector<Mirror_point> computed;
   if constexpr(!is_default_parameter<NamedParameters, snp::symmetric_map_t>::value)
     computed = CGAL::parameters::get_parameter(np, snp::symmetric_map_tag);

@@ -244,6 +244,27 @@ inline Coseg_result cosegment(std::vector<Coseg_mesh>& meshes, const Coseg_optio
       o.progress_callback(f);
   };
 
+  // More segments than faces cannot be made (hierarchical_segmentation() refuses them too); a
+  // symmetry plane that leaves the mesh on one side has no mirror to pair.
+  std::size_t faces = 0;
+  for(const Coseg_mesh& mesh : meshes)
+    faces += mesh.triangles.size();
+  if(o.number_of_segments > faces)
+    throw CGAL::Shape_analysis::Bad_input("consistent_segmentation: number_of_segments (" + std::to_string(o.number_of_segments) +
+                    ") exceeds the number of faces of the meshes (" + std::to_string(faces) + ")");
+  for(const Coseg_mesh& mesh : meshes) {
+    if(!mesh.has_plane)
+      continue;
+    double lowest = 0, highest = 0;
+    for(const auto& t : mesh.triangles)
+      for(const SAI::Vector_3d& c : t) {
+        const double side = SAI::dot(mesh.plane_normal, c) - mesh.plane_offset;
+        lowest = (std::min)(lowest, side), highest = (std::max)(highest, side);
+      }
+    if(!(lowest < 0 && highest > 0))
+      throw CGAL::Shape_analysis::Bad_input("symmetric_segmentation: the symmetry plane does not cross the mesh (all of it lies on one side)");
+  }
+
   const std::vector<std::vector<std::size_t>> over = oversegment_meshes(meshes, o);
   report(0.2);
 
