@@ -153,6 +153,11 @@ double bounding_box_diagonal(const std::vector<Point_3>& points);
 // "...: permission denied".
 void check_input_file(const std::string& path);
 
+// The whole command line: parses it, checks its values and, with `execute`, runs the job;
+// messages on stderr; returns the exit code (0, 1 the job failed, 2 bad command line). Without
+// `execute` (the fuzzer of the option parsing), 0 when the command line is accepted.
+int run_command_line(int argc, char** argv, bool execute);
+
 // A count option's check: a whole number >= 1, else "must be a positive whole number (got x)"
 // (CLI11's PositiveNumber names the largest double in its message).
 extern const CLI::Validator positive_count;

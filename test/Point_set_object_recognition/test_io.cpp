@@ -677,7 +677,7 @@ TEST_F(Io, BadFilesAreRefusedWithClearMessages)
   save_text(path("empty.xyz"), "");
   expect_bad_input(read(path("empty.xyz")), "no points");
   save_text(path("words.xyz"), "1 2 3\nthis is not a point\n");
-  expect_bad_input(read(path("words.xyz")), "line 2: expected 'x y z'");
+  expect_bad_input(read(path("words.xyz")), "line 2: 'this' is not a number");
   save_text(path("nan.xyz"), "# a comment\n1 2 3\n\n4 nan 6\n");
   expect_bad_input(read(path("nan.xyz")), "line 4: 'nan' is not a finite number");
   save_text(path("nan_ascii.ply"), "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"

@@ -15,7 +15,7 @@ namespace Randomized_cuts {
 The ways `partition_function()` draws random segmentations of a mesh (named parameter
 `sampling_method`).
 */
-enum Sampling_method
+enum Sampling_method : int
 {
   /// A minimum cut between two random faces, with cuts near either face made expensive so that
   /// both sides are parts of a reasonable size (the default). Each sample is one cut into two

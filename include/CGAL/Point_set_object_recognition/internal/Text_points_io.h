@@ -59,36 +59,51 @@ inline Xyz_points read_xyz(const std::string& filename)
   if(!in)
     throw CGAL::Shape_analysis::Bad_input(filename + ": cannot open the file for reading");
   Xyz_points r;
-  std::string line, word;
+  std::string line;
   std::size_t number = 0, with_normals = 0, points = 0;
   bool first = true;
+  double v[7];
   while(std::getline(in, line)) {
     ++number;
-    if(!line.empty() && line.back() == '\r')
-      line.pop_back();
-    std::istringstream words(line);
-    std::vector<std::string> w;
-    while(words >> word)
-      w.push_back(word);
-    if(w.empty() || w[0][0] == '#')
+    // The values of the line, parsed in place (a word that is not a number: its text).
+    const char* c = line.c_str();
+    const char* const end = c + line.size();
+    const auto blank = [](char x) { return x == ' ' || x == '\t' || x == '\r'; };
+    while(c < end && blank(*c))
+      ++c;
+    if(c == end || *c == '#')
       continue;
-    double count = 0;
-    if(first && w.size() == 1 && parse_number(w[0], count) && count >= 0 && count == std::floor(count)) {
-      first = false;
+    std::size_t count = 0;
+    std::string bad;
+    while(c < end && count < 7) {
+      char* after = nullptr;
+      const double x = std::strtod(c, &after);
+      const char* word_end = c;
+      while(word_end < end && !blank(*word_end))
+        ++word_end;
+      if(after != word_end || !std::isfinite(x)) {
+        bad = "'" + std::string(c, word_end) + (after != word_end ? "' is not a number" : "' is not a finite number");
+        break;
+      }
+      v[count++] = x;
+      c = word_end;
+      while(c < end && blank(*c))
+        ++c;
+    }
+    const auto where = [&]() { return filename + ": line " + std::to_string(number) + ": "; };
+    if(!bad.empty())
+      throw CGAL::Shape_analysis::Bad_input(where() + bad);
+    if(first && count == 1 && c == end && v[0] >= 0 && v[0] == std::floor(v[0])) {
+      first = false; // the number of points
       continue;
     }
     first = false;
-    const auto where = [&]() { return filename + ": line " + std::to_string(number) + ": "; };
-    if(w.size() != 3 && w.size() != 6)
+    if(c != end || (count != 3 && count != 6))
       throw CGAL::Shape_analysis::Bad_input(where() + "expected 'x y z' or 'x y z nx ny nz', got " +
-                                            std::to_string(w.size()) + " values");
-    for(std::size_t k = 0; k < w.size(); ++k) {
-      const std::string problem = coordinate_problem(w[k]);
-      if(!problem.empty())
-        throw CGAL::Shape_analysis::Bad_input(where() + problem);
-      (k < 3 ? r.xyz : r.normals).push_back(std::strtod(w[k].c_str(), nullptr));
-    }
-    with_normals += w.size() == 6 ? 1 : 0;
+                                            (c != end ? std::string("more than 6") : std::to_string(count)) + " values");
+    for(std::size_t k = 0; k < count; ++k)
+      (k < 3 ? r.xyz : r.normals).push_back(v[k]);
+    with_normals += count == 6 ? 1 : 0;
     ++points;
   }
   if(with_normals != points)
