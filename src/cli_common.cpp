@@ -62,8 +62,9 @@ Input_mesh read_triangle_mesh(const std::string& path)
       throw Cli_error(std::string("cannot read '") + path + "'" + (e.what() + path.size()));
     }
   }
-  if(ext == ".obj") {
-    const std::string why = CGAL::Shape_analysis_support::check_obj_faces(path);
+  if(ext == ".obj" || ext == ".off") { // (before CGAL's readers, which trust indices and counts)
+    const std::string why = ext == ".obj" ? CGAL::Shape_analysis_support::check_obj_faces(path)
+                                          : CGAL::Shape_analysis_support::diagnose_off(path);
     if(!why.empty())
       throw Cli_error("cannot read '" + path + "': " + why);
   }

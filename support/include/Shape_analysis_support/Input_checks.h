@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -60,9 +61,10 @@ inline bool whole_number(const std::string& w, long long& v)
 
 } // namespace input_checks_internal
 
-// For an OFF file that CGAL's reader refused: what is wrong with it (its header, a count, a
-// vertex, a face), or an empty string when this check finds nothing (or the file is not a plain
-// ASCII "OFF").
+// What is wrong with an OFF file (its header, a count, a vertex, a face), or an empty string when
+// this check finds nothing or cannot tell (binary OFF, 4OFF, nOFF: left to CGAL's reader). The
+// tool runs it before CGAL's reader, which converts a negative vertex index to an unsigned
+// integer (undefined behaviour) and trusts the counts.
 inline std::string diagnose_off(const std::string& path)
 {
   using namespace input_checks_internal;
@@ -71,9 +73,17 @@ inline std::string diagnose_off(const std::string& path)
   std::vector<std::string> w;
   if(!next_words(in, line, w))
     return "the file is empty";
-  if(w[0] != "OFF")
-    return w[0].compare(0, 3, "OFF") == 0 || w[0].find("OFF") != std::string::npos ? std::string()
-                                                                                  : "the file does not start with 'OFF'";
+  {
+    // [ST][C][N]OFF, its counts possibly on the same line.
+    std::string key = w[0];
+    for(const char* prefix : {"ST", "C", "N"})
+      if(key.compare(0, std::strlen(prefix), prefix) == 0 && key.size() > 3)
+        key.erase(0, std::strlen(prefix));
+    if(key != "OFF")
+      return w[0].find("OFF") != std::string::npos ? std::string() : "the file does not start with 'OFF'";
+    if(w.size() > 1 && w[1] == "BINARY")
+      return std::string();
+  }
   w.erase(w.begin());
   if(w.empty() && !next_words(in, line, w))
     return "the header has no counts (vertices faces edges)";

@@ -5,6 +5,7 @@ cmake_minimum_required(VERSION 3.16)
 #   - says exactly one line on stderr, matching the expected pattern,
 #   - leaves its output folder empty (no output, no temporary file; outputs are only written there).
 #   cmake -DEXE=<tool> -DARGS="a|b|c" -DEXIT=<n> -DMESSAGE=<regex> -DIN=<inputs> -DOUT=<folder>
+#         -DFOUND=<the crash inputs the fuzzers found, kept in found/>
 #         -P run_case.cmake
 string(REPLACE "|" ";" args "${ARGS}")
 file(REMOVE_RECURSE "${OUT}")
@@ -13,6 +14,7 @@ set(resolved "")
 foreach(a IN LISTS args)
   string(REPLACE "%IN%" "${IN}" a "${a}")
   string(REPLACE "%OUT%" "${OUT}" a "${a}")
+  string(REPLACE "%FOUND%" "${FOUND}" a "${a}")
   list(APPEND resolved "${a}")
 endforeach()
 execute_process(COMMAND "${EXE}" ${resolved} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err

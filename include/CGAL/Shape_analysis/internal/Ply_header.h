@@ -12,6 +12,7 @@
 #include <CGAL/Shape_analysis/Bad_input.h>
 
 #include <algorithm>
+#include <iterator>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -30,50 +31,88 @@ struct Ply_header
 };
 
 // The header of the PLY file `path`; Bad_input, its message starting with `path`, when the file
-// does not start with "ply", has no "format" line or no "end_header" within its first 64 KiB
-// of header, or its vertex element lacks one of x, y and z.
+// does not start with "ply", has no "end_header" within its first 64 KiB, a line that is not a
+// PLY header line, a format other than ascii / binary_little_endian / binary_big_endian (or two
+// formats), an element given twice or with a count that is not a whole number, a property of an
+// unknown type, outside an element or given twice in an element, or a vertex element without
+// scalar x, y and z properties. (CGAL's reader trusts the header: two properties named x of
+// different types made it call a member of a null pointer.)
 inline Ply_header read_ply_header(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
   if(!in)
     throw Bad_input(path + ": cannot open the file for reading");
+  static const char* const types[] = {"char",  "uchar", "short",  "ushort", "int",    "uint",
+                                      "float", "double", "int8",  "uint8",  "int16",  "uint16",
+                                      "int32", "uint32", "float32", "float64"};
+  const auto is_type = [&](const std::string& t) {
+    return std::find_if(std::begin(types), std::end(types), [&](const char* x) { return t == x; }) != std::end(types);
+  };
   Ply_header h;
   std::string line;
-  std::size_t read = 0;
+  std::size_t read = 0, number = 0;
   bool magic = false, end = false, in_vertex = false, has_vertex = false;
+  std::vector<std::string> elements, properties, vertex_lists;
   while(std::getline(in, line)) {
+    ++number;
     read += line.size() + 1;
     if(read > 65536)
       break;
     if(!line.empty() && line.back() == '\r')
       line.pop_back();
     std::istringstream words(line);
-    std::string word;
+    std::string word, extra;
     words >> word;
+    const auto bad = [&](const std::string& what) {
+      return Bad_input(path + ": PLY header line " + std::to_string(number) + ": " + what);
+    };
     if(!magic) {
       if(word != "ply")
         throw Bad_input(path + ": not a PLY file (its first line is not 'ply')");
       magic = true;
     } else if(word == "format") {
+      if(!h.format.empty())
+        throw bad("a second format");
       words >> h.format;
     } else if(word == "element") {
-      std::string name;
-      words >> name;
+      std::string name, count;
+      words >> name >> count;
+      const bool whole = !count.empty() && count.find_first_not_of("0123456789") == std::string::npos && count.size() < 19;
+      if(name.empty() || !whole || (words >> extra))
+        throw bad("expected 'element NAME COUNT'");
+      if(std::find(elements.begin(), elements.end(), name) != elements.end())
+        throw bad("a second element '" + name + "'");
+      elements.push_back(name);
+      properties.clear();
       in_vertex = name == "vertex";
       has_vertex = has_vertex || in_vertex;
       h.has_faces = h.has_faces || name == "face";
       if(in_vertex)
-        words >> h.vertices;
-    } else if(word == "property" && in_vertex) {
-      std::string type, name;
+        h.vertices = std::size_t(std::stoull(count));
+    } else if(word == "property") {
+      if(elements.empty())
+        throw bad("a property outside any element");
+      std::string type, name, count_type;
       words >> type;
-      if(type == "list")
-        words >> type >> type;
+      const bool list = type == "list";
+      if(list)
+        words >> count_type >> type;
       words >> name;
-      h.vertex_properties.push_back(name);
+      if(name.empty() || (words >> extra) || !is_type(type) || (list && !is_type(count_type)))
+        throw bad("expected 'property TYPE NAME' or 'property list TYPE TYPE NAME' with PLY types");
+      if(std::find(properties.begin(), properties.end(), name) != properties.end())
+        throw bad("a second property '" + name + "' in the element '" + elements.back() + "'");
+      properties.push_back(name);
+      if(in_vertex) {
+        h.vertex_properties.push_back(name);
+        if(list)
+          vertex_lists.push_back(name);
+      }
     } else if(word == "end_header") {
       end = true;
       break;
+    } else if(word != "comment" && word != "obj_info" && !word.empty()) {
+      throw bad("'" + word + "' is not a PLY header keyword");
     }
   }
   if(!magic)
@@ -85,9 +124,12 @@ inline Ply_header read_ply_header(const std::string& path)
                     "' is not ascii, binary_little_endian or binary_big_endian");
   if(!has_vertex)
     throw Bad_input(path + ": the PLY file has no 'vertex' element");
-  for(const char* c : {"x", "y", "z"})
+  for(const char* c : {"x", "y", "z"}) {
     if(std::find(h.vertex_properties.begin(), h.vertex_properties.end(), c) == h.vertex_properties.end())
       throw Bad_input(path + ": the PLY file's vertices have no '" + c + "' property (they need x, y and z)");
+    if(std::find(vertex_lists.begin(), vertex_lists.end(), c) != vertex_lists.end())
+      throw Bad_input(path + ": the PLY file's vertex property '" + std::string(c) + "' is a list, not a number");
+  }
   return h;
 }
 
