@@ -35,8 +35,9 @@ struct Ply_header
 // PLY header line, a format other than ascii / binary_little_endian / binary_big_endian (or two
 // formats), an element given twice or with a count that is not a whole number, a property of an
 // unknown type, outside an element or given twice in an element, or a vertex element without
-// scalar x, y and z properties. (CGAL's reader trusts the header: two properties named x of
-// different types made it call a member of a null pointer.)
+// scalar x, y and z properties of type float or double (nx, ny, nz too, when present). (CGAL's
+// reader trusts the header: two properties named x of different types, or an integer y, made it
+// call a member of a null pointer.)
 inline Ply_header read_ply_header(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -107,6 +108,12 @@ inline Ply_header read_ply_header(const std::string& path)
         h.vertex_properties.push_back(name);
         if(list)
           vertex_lists.push_back(name);
+        // CGAL's reader takes coordinates and normals as float or double only (another type made
+        // it call a member of a null pointer).
+        const bool real = type == "float" || type == "double" || type == "float32" || type == "float64";
+        for(const char* c : {"x", "y", "z", "nx", "ny", "nz"})
+          if(name == c && !list && !real)
+            throw bad("the vertex property '" + name + "' is " + type + "; coordinates and normals must be float or double");
       }
     } else if(word == "end_header") {
       end = true;
