@@ -507,7 +507,7 @@ std::vector<Truth_object> read_truth_objects(const std::string& path)
   Json file;
   try {
     file = Json::parse(in);
-  } catch(const Json::parse_error& e) {
+  } catch(const Json::exception& e) { // (a syntax error, or a number that overflows)
     throw Cli_error(path + ": not JSON (" + e.what() + ")");
   }
   if(!file.is_array())

@@ -349,7 +349,7 @@ Recognition_model read_recognition_model(const std::string& path)
   Json j;
   try {
     j = Json::parse(in);
-  } catch(const Json::parse_error&) {
+  } catch(const Json::exception&) { // (a syntax error, or a number that overflows)
     throw Cli_error(path + ": not a model file of 'points train' (not JSON, or truncated)");
   }
   if(!j.is_object() || j.value("format", std::string()) != model_format)
