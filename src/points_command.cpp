@@ -27,6 +27,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <type_traits>
 #include <iomanip>
 #include <map>
 #include <iostream>
@@ -522,8 +524,18 @@ std::vector<Truth_object> read_truth_objects(const std::string& path)
       const auto it = object.find(key);
       if(it == object.end() || it->is_null())
         return fallback;
+      typedef decltype(fallback) T;
+      if constexpr(std::is_integral_v<T>) { // a whole number in T's range (a double out of it is UB)
+        const bool whole = it->is_number_integer() || it->is_number_unsigned();
+        const bool fits = whole && (it->is_number_unsigned()
+                                      ? it->template get<unsigned long long>() <= (unsigned long long)(std::numeric_limits<T>::max())
+                                      : it->template get<long long>() >= (long long)(std::numeric_limits<T>::min()) &&
+                                          it->template get<long long>() <= (long long)(std::numeric_limits<T>::max()));
+        if(!fits)
+          throw Cli_error(path + ": \"" + key + "\" of " + which + " is not a whole number in range");
+      }
       try {
-        return it->template get<decltype(fallback)>();
+        return it->template get<T>();
       } catch(const Json::exception&) {
         throw Cli_error(path + ": \"" + key + "\" of " + which + " is not a number or name of the right kind");
       }
