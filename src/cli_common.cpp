@@ -49,8 +49,7 @@ void check_input_file(const std::string& path)
 Input_mesh read_triangle_mesh(const std::string& path)
 {
   check_input_file(path);
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string ext = lower_extension(path);
   if(ext != ".off" && ext != ".ply" && ext != ".obj" && ext != ".stl")
     throw Cli_error("cannot read '" + path + "': unknown mesh format '" + ext +
                     "' (use .off, .ply, .obj or .stl)");
@@ -76,11 +75,9 @@ Input_mesh read_triangle_mesh(const std::string& path)
   } catch(const std::exception&) {
     ok = false;
   }
-  if(!ok) {
-    const std::string why = ext == ".off" ? CGAL::Shape_analysis_support::diagnose_off(path) : std::string();
-    throw Cli_error("cannot read '" + path + "': " +
-                    (why.empty() ? "not a valid " + ext.substr(1) + " mesh file (or a coordinate that is not a number)" : why));
-  }
+  if(!ok)
+    throw Cli_error("cannot read '" + path + "': not a valid " + ext.substr(1) +
+                    " mesh file (or a coordinate that is not a number)");
   if(polygons.empty())
     throw Cli_error("'" + path + "' has no faces");
   const std::vector<Point_3>& points = result.points;
@@ -223,8 +220,6 @@ std::vector<long long> read_labels(const std::string& path)
 {
   check_input_file(path);
   std::ifstream in(path);
-  if(!in)
-    throw Cli_error("cannot read '" + path + "': no such file or unreadable");
   std::vector<long long> labels;
   std::string line;
   std::size_t line_number = 0;
@@ -317,34 +312,16 @@ void Output_files::add_output(const std::string& path, const std::string& what,
   for(const auto& out : m_outputs)
     if(out.first == target)
       throw Usage_error("'" + path + "' is given for two outputs");
-  std::error_code exists_error;
-  if(fs::is_directory(target, exists_error))
-    throw Cli_error("cannot write the " + what + " '" + path + "': it is a directory");
-  const bool any_name = fs::exists(path, exists_error) && !fs::is_regular_file(path, exists_error) &&
-                        !fs::is_directory(path, exists_error); // (/dev/null, /dev/stdout: any name)
-  if(any_name || extensions.size() == 0) {
-  } else if(extensions.size() == 1)
-    require_extension(path, *extensions.begin(), what);
-  else {
-    std::string ext = fs::path(path).extension().string(), allowed;
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    bool found = false;
-    for(const char* e : extensions) {
-      found = found || ext == e;
-      allowed += std::string(allowed.empty() ? "" : " or ") + e;
-    }
-    if(!found)
-      throw Usage_error("the " + what + " must be named " + allowed + " (got '" + path + "')");
-  }
-  const fs::path dir = fs::path(target).parent_path();
   std::error_code ec;
+  if(fs::is_directory(target, ec))
+    throw Cli_error("cannot write the " + what + " '" + path + "': it is a directory");
+  const bool special = fs::exists(target, ec) && !fs::is_regular_file(target, ec);
+  if(!special && extensions.size() > 0) // (/dev/null, /dev/stdout: any name)
+    require_extension(path, extensions, what);
+  const fs::path dir = fs::path(target).parent_path();
   if(!fs::is_directory(dir, ec))
     throw Cli_error("cannot write the " + what + " '" + path + "': directory '" + dir.string() +
                     "' does not exist");
-  if(fs::is_directory(target, ec))
-    throw Cli_error("cannot write the " + what + " '" + path + "': it is a directory");
-  const bool exists = fs::exists(target, ec);
-  const bool special = exists && !fs::is_regular_file(target, ec);
   if(special ? ::access(target.c_str(), W_OK) != 0 : ::access(dir.c_str(), W_OK) != 0)
     throw Cli_error("cannot write the " + what + " '" + path + "': " + std::strerror(errno));
   m_outputs.emplace_back(target, path);
@@ -542,16 +519,27 @@ const CLI::Validator positive_count(
   },
   "N > 0");
 
-void require_extension(const std::string& path, const std::string& extension, const std::string& what)
+std::string lower_extension(const std::string& path)
 {
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if(ext != extension) {
-    std::string format = extension.substr(1);
+  return ext;
+}
+
+void require_extension(const std::string& path, std::initializer_list<const char*> extensions, const std::string& what)
+{
+  const std::string ext = lower_extension(path);
+  std::string formats, names;
+  bool found = false;
+  for(const char* e : extensions) {
+    found = found || ext == e;
+    std::string format = std::string(e).substr(1);
     std::transform(format.begin(), format.end(), format.begin(), [](unsigned char c) { return char(std::toupper(c)); });
-    throw Usage_error("the " + what + " is written as " + format + ": name it '" + extension +
-                      "' (got '" + path + "')");
+    formats += (formats.empty() ? "" : " or ") + format;
+    names += std::string(names.empty() ? "'" : " or '") + e + "'";
   }
+  if(!found)
+    throw Usage_error("the " + what + " is written as " + formats + ": name it " + names + " (got '" + path + "')");
 }
 
 void write_labels(std::ostream& out, const std::vector<std::size_t>& labels)

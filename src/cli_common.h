@@ -162,9 +162,13 @@ int run_command_line(int argc, char** argv, bool execute);
 // (CLI11's PositiveNumber names the largest double in its message).
 extern const CLI::Validator positive_count;
 
-// Checks that `path` ends with `extension` (case-insensitive, e.g. ".off"); Usage_error naming
-// `what` otherwise.
-void require_extension(const std::string& path, const std::string& extension, const std::string& what);
+// The extension of `path`, lower case (".ply").
+std::string lower_extension(const std::string& path);
+
+// Checks that `path` ends with one of `extensions` (case-insensitive, e.g. {".ply", ".las"});
+// Usage_error naming `what` and the formats otherwise ("the coloured mesh is written as PLY: name
+// it '.ply' (got 'parts.off')").
+void require_extension(const std::string& path, std::initializer_list<const char*> extensions, const std::string& what);
 
 // One label per line.
 void write_labels(std::ostream& out, const std::vector<std::size_t>& labels);

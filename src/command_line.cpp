@@ -26,32 +26,22 @@ std::string one_line(std::string s)
   return s;
 }
 
-// The first option of the parsed command line given an empty value ("-o ''"), or null: an
-// empty file name or number is never meant, and would otherwise read as "not given".
-const CLI::Option* option_with_empty_value(const CLI::App& app)
-{
-  for(const CLI::Option* o : app.get_options())
-    if(o->count() > 0 && o->get_expected_min() > 0)
-      for(const std::string& r : o->results())
-        if(r.empty())
-          return o;
-  for(const CLI::App* sub : app.get_subcommands())
-    if(const CLI::Option* o = option_with_empty_value(*sub))
-      return o;
-  return nullptr;
-}
-
-// The first value of an unsigned option that is not a whole number >= 0 within 64 bits, as a
-// message ("--seed -3" would otherwise wrap around to 18446744073709551613, and an overflow read
-// as the largest value), or an empty string.
-std::string bad_unsigned_value(const CLI::App& app)
+// What is wrong with the first bad value of the parsed command line, or an empty string: an empty
+// value ("-o ''": never meant, and it would read as "not given"), or a value of an unsigned option
+// that is not a whole number >= 0 within 64 bits ("--seed -3" wrapped around to
+// 18446744073709551613, an overflow read as the largest value).
+std::string bad_option_value(const CLI::App& app)
 {
   for(const CLI::Option* o : app.get_options()) {
-    if(o->count() == 0 || o->get_type_name().compare(0, 4, "UINT") != 0)
+    if(o->count() == 0)
       continue;
+    const bool unsigned_option = o->get_type_name().compare(0, 4, "UINT") == 0;
     for(const std::string& r : o->results()) {
-      const bool digits = !r.empty() && r.find_first_not_of("0123456789") == std::string::npos;
-      if(!digits)
+      if(r.empty() && o->get_expected_min() > 0)
+        return o->get_name() + " is given an empty value";
+      if(!unsigned_option)
+        continue;
+      if(r.empty() || r.find_first_not_of("0123456789") != std::string::npos)
         return o->get_name() + ": '" + r + "' is not a whole number >= 0";
       const std::size_t first = (std::min)(r.find_first_not_of('0'), r.size());
       if(r.size() - first > 20 || (r.size() - first == 20 && r.compare(first, 20, "18446744073709551615") > 0))
@@ -59,7 +49,7 @@ std::string bad_unsigned_value(const CLI::App& app)
     }
   }
   for(const CLI::App* sub : app.get_subcommands()) {
-    const std::string m = bad_unsigned_value(*sub);
+    const std::string m = bad_option_value(*sub);
     if(!m.empty())
       return m;
   }
@@ -130,13 +120,9 @@ int run_command_line(int argc, char** argv, bool execute)
               << " (see shape_analysis --help)" << std::endl;
     return 2;
   }
-  const std::string bad_number = bad_unsigned_value(app);
-  if(!bad_number.empty()) {
-    std::cerr << "shape_analysis: error: " << bad_number << std::endl;
-    return 2;
-  }
-  if(const CLI::Option* o = option_with_empty_value(app)) {
-    std::cerr << "shape_analysis: error: " << o->get_name() << " is given an empty value" << std::endl;
+  const std::string bad_value = bad_option_value(app);
+  if(!bad_value.empty()) {
+    std::cerr << "shape_analysis: error: " << bad_value << std::endl;
     return 2;
   }
 

@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -149,22 +148,6 @@ void write_objects_las(std::ostream& out, Point_set& result, const std::vector<s
 }
 
 } // namespace
-
-// The extension of `path`, lower case.
-std::string lower_extension(const std::string& path)
-{
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
-
-void require_objects_extension(const std::string& path)
-{
-  const std::string ext = lower_extension(path);
-  if(ext != ".ply" && ext != ".las")
-    throw Usage_error("the segmented points are written as PLY or LAS: name them '.ply' or '.las' (got '" + path +
-                      "')");
-}
 
 void stage_objects_file(Output_files& outputs, const std::string& path, const std::string& input,
                         const Point_set& points, const std::vector<int>& object, const std::vector<char>& ground,

@@ -61,9 +61,6 @@ Json objects_report(const std::vector<std::array<double, 3>>& locations, const s
 PSOR::Point_set_read_result read_scan_to_segment(const std::string& input, CGAL::Point_set_3<Point_3>& points,
                                                  double& read_seconds);
 
-// Refuses (Usage_error) a name of the segmented points that ends neither in .ply nor in .las.
-void require_objects_extension(const std::string& path);
-
 // Stages the segmented points (objects_output.cpp), PLY or LAS by the extension of `path`: the
 // input's points in input order with their properties, 'object' (per point its location's row, -1
 // for none), 'ground' (1 for ground), with `label` (not empty) 'label' (per point its object's

@@ -383,8 +383,7 @@ int run_recognize(const Recognize_options& o)
   outputs.add_input(o.input);
   if(!o.model.empty())
     outputs.add_input(o.model);
-  require_objects_extension(o.output);
-  outputs.add_output(o.output, "segmented points", {".ply", ".las"});
+  outputs.add_output(o.output, "segmented point cloud", {".ply", ".las"});
   if(!o.locations.empty()) {
     outputs.add_output(o.locations, "locations", {".csv"});
   }

@@ -88,8 +88,6 @@ Locations_file read_locations_file(const std::string& path)
 {
   check_input_file(path);
   std::ifstream in(path);
-  if(!in)
-    throw Cli_error("cannot open " + path);
   std::size_t number = 0, columns = 0;
   Locations_file r;
   const auto where = [&]() { return path + ": line " + std::to_string(number) + ": "; };
@@ -212,8 +210,7 @@ int run_segment(const Segment_options& o)
   Output_files outputs;
   outputs.add_input(o.input);
   outputs.add_input(o.locations);
-  require_objects_extension(o.output);
-  outputs.add_output(o.output, "segmented points", {".ply", ".las"});
+  outputs.add_output(o.output, "segmented point cloud", {".ply", ".las"});
   outputs.add_optional_output(o.report, "report", {".json"});
   PSOR::Segment_objects_options so = o.segmentation;
   so.segmentation_method = segmentation_method(o.method);

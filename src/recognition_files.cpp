@@ -23,6 +23,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <type_traits>
 
 namespace shape_analysis_cli {
 
@@ -44,8 +45,6 @@ std::vector<Labelled_object> read_labelled_csv(const std::string& path)
 {
   check_input_file(path);
   std::ifstream in(path);
-  if(!in)
-    throw Cli_error("cannot open " + path);
   const std::set<std::string> known{"x", "y", "z", "label", "class", "length", "width", "height", "yaw", "points"};
   std::map<std::string, std::size_t> column;
   std::vector<Labelled_object> r;
@@ -344,8 +343,6 @@ Recognition_model read_recognition_model(const std::string& path)
 {
   check_input_file(path);
   std::ifstream in(path);
-  if(!in)
-    throw Cli_error("cannot open " + path);
   Json j;
   try {
     j = Json::parse(in);
@@ -398,6 +395,66 @@ Recognition_model read_recognition_model(const std::string& path)
     throw Cli_error(path + ": " + e.what());
   }
   return m;
+}
+
+// The ground truth of 'points generate --truth' (locate, evaluate, train).
+std::vector<Truth_object> read_truth_objects(const std::string& path)
+{
+  check_input_file(path);
+  std::ifstream in(path);
+  Json file;
+  try {
+    file = Json::parse(in);
+  } catch(const Json::exception& e) { // (a syntax error, or a number that overflows)
+    throw Cli_error(path + ": not JSON (" + e.what() + ")");
+  }
+  if(!file.is_array())
+    throw Cli_error(path + ": not a JSON array of objects (write it with 'points generate --truth')");
+  std::vector<Truth_object> r;
+  for(const Json& object : file) {
+    Truth_object t;
+    t.id = int(r.size());
+    const std::string which = "object " + std::to_string(r.size());
+    // A member of the wanted type, or the default when it is absent.
+    const auto member = [&](const char* key, auto fallback) {
+      const auto it = object.find(key);
+      if(it == object.end() || it->is_null())
+        return fallback;
+      typedef decltype(fallback) T;
+      if constexpr(std::is_integral_v<T>) { // a whole number in T's range (a double out of it is UB)
+        const bool whole = it->is_number_integer() || it->is_number_unsigned();
+        const bool fits = whole && (it->is_number_unsigned()
+                                      ? it->template get<unsigned long long>() <= (unsigned long long)(std::numeric_limits<T>::max())
+                                      : it->template get<long long>() >= (long long)(std::numeric_limits<T>::min()) &&
+                                          it->template get<long long>() <= (long long)(std::numeric_limits<T>::max()));
+        if(!fits)
+          throw Cli_error(path + ": \"" + key + "\" of " + which + " is not a whole number in range");
+      }
+      try {
+        return it->template get<T>();
+      } catch(const Json::exception&) {
+        throw Cli_error(path + ": \"" + key + "\" of " + which + " is not a number or name of the right kind");
+      }
+    };
+    if(!object.is_object())
+      throw Cli_error(path + ": " + which + " is not a JSON object");
+    t.id = member("id", t.id);
+    t.object_class = member("class_id", 0);
+    t.name = member("class", std::string());
+    t.scanned_points = member("scanned_points", -1L);
+    const auto location = object.find("location");
+    if(location == object.end() || !location->is_array() || location->size() < 2 || location->size() > 3)
+      throw Cli_error(path + ": object " + std::to_string(t.id) + " has no \"location\": [x, y, z]");
+    for(std::size_t k = 0; k < location->size(); ++k) {
+      if(!(*location)[k].is_number())
+        throw Cli_error(path + ": a coordinate of object " + std::to_string(t.id) + " is not a number");
+      t.location[k] = (*location)[k].get<double>();
+      if(!std::isfinite(t.location[k]))
+        throw Cli_error(path + ": a coordinate of object " + std::to_string(t.id) + " is not finite");
+    }
+    r.push_back(t);
+  }
+  return r;
 }
 
 } // namespace shape_analysis_cli

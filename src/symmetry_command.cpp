@@ -18,8 +18,6 @@
 #include <CGAL/IO/polygon_soup_io.h>
 
 #include <algorithm>
-#include <cctype>
-#include <filesystem>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -229,9 +227,7 @@ std::vector<CGAL::IO::Color> read_vertex_colours(const std::string& path, std::s
                                                  std::size_t merged)
 {
   check_input_file(path);
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if(ext != ".ply")
+  if(lower_extension(path) != ".ply")
     throw Cli_error("the vertex colours are read from a PLY file, not '" + path +
                     "': give the input as .ply or the colours with --colors FILE.ply");
   std::vector<Point_3> points;

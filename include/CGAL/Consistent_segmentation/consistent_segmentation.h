@@ -13,6 +13,7 @@
 #include <CGAL/Shape_analysis/parameters.h>
 #include <CGAL/Shape_analysis/internal/Dual_graph.h>
 #include <CGAL/Shape_analysis/internal/Mesh_checks.h>
+#include <CGAL/Shape_analysis/internal/Vector_3d.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -470,14 +471,7 @@ Consistent_segmentation_result symmetric_segmentation(const TriangleMesh& tm, co
 
   double a = CGAL::to_double(plane.a()), b = CGAL::to_double(plane.b()), c = CGAL::to_double(plane.c()),
          d = CGAL::to_double(plane.d());
-  // Divided by a power of two near the largest of |a|, |b|, |c| (exact): 0,0,1e-300,0 is z = 0.
-  const double largest = (std::max)((std::max)(std::abs(a), std::abs(b)), std::abs(c));
-  if(largest > 0 && std::isfinite(largest)) {
-    int exponent = 0;
-    std::frexp(largest, &exponent);
-    a = std::ldexp(a, -exponent), b = std::ldexp(b, -exponent), c = std::ldexp(c, -exponent);
-    d = std::ldexp(d, -exponent);
-  }
+  SAI::scale_plane_coefficients(a, b, c, d); // (0,0,1e-300,0 is z = 0)
   const double length = std::sqrt(a * a + b * b + c * c);
   if(!(length > 0) || !std::isfinite(length) || !std::isfinite(d))
     throw Bad_input(who + ": the symmetry plane is degenerate (its normal is zero or not finite)");

@@ -223,11 +223,11 @@ void transfer_vertex_attribute(const TriangleMesh& tm, const Symmetry<Kernel>& s
     throw Bad_input(who + ": copying one side onto the other needs a reflection (use Transfer_mode::BLEND)");
 
   const internal::Mesh_arrays<TriangleMesh> mesh = internal::read_mesh_np(tm, np, who);
-  internal::check_plane_crosses(mesh.surface, symmetry, who);
   std::vector<Mirror_point> computed;
-  if constexpr(!is_default_parameter<NamedParameters, snp::symmetric_map_t>::value)
+  if constexpr(!is_default_parameter<NamedParameters, snp::symmetric_map_t>::value) {
+    internal::check_plane_crosses(mesh.surface, symmetry, who); // (symmetric_map() checks it otherwise)
     computed = CGAL::parameters::get_parameter(np, snp::symmetric_map_tag);
-  else
+  } else
     computed = internal::symmetric_map(mesh.surface, symmetry, compute_symmetric_map_options(np), who);
   const std::vector<Mirror_point>* map = &computed;
   const std::size_t n = mesh.vertices.size();

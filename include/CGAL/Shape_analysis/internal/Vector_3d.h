@@ -45,6 +45,20 @@ inline Vector_3d cross(const Vector_3d& a, const Vector_3d& b)
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
+// Divides the coefficients of the plane a x + b y + c z + d = 0 by a power of two near the largest
+// of |a|, |b|, |c| (exact; the same plane): a normal of 1e-300 then has a square that does not
+// underflow to zero. Nothing when (a, b, c) is zero or not finite.
+inline void scale_plane_coefficients(double& a, double& b, double& c, double& d)
+{
+  const double largest = (std::max)((std::max)(std::abs(a), std::abs(b)), std::abs(c));
+  if(!(largest > 0) || !std::isfinite(largest))
+    return;
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  a = std::ldexp(a, -exponent), b = std::ldexp(b, -exponent), c = std::ldexp(c, -exponent);
+  d = std::ldexp(d, -exponent);
+}
+
 } // namespace internal
 } // namespace Shape_analysis
 } // namespace CGAL

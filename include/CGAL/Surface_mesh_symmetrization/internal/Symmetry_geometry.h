@@ -146,22 +146,15 @@ inline Vector_3d reflect_direction(const Plane_3d& plane, const Vector_3d& v)
 }
 
 // The plane a x + b y + c z + d = 0 as n.x = offset with n a unit vector; throws Bad_input when
-// (a, b, c) is zero or a coefficient is not finite. The coefficients are first divided by the
-// largest of |a|, |b|, |c| (a power of two: exact), so that 0,0,1e-300,0 is the plane z = 0 and
-// not a zero normal whose square underflowed.
+// (a, b, c) is zero or a coefficient is not finite. The coefficients are scaled first
+// (SAI::scale_plane_coefficients()): 0,0,1e-300,0 is the plane z = 0.
 inline Plane_3d plane_from_coefficients(double a, double b, double c, double d, const std::string& who)
 {
   if(!std::isfinite(a) || !std::isfinite(b) || !std::isfinite(c) || !std::isfinite(d))
     throw Bad_input(who + ": the plane has a coefficient that is not a finite number");
-  const double largest = (std::max)((std::max)(std::abs(a), std::abs(b)), std::abs(c));
-  if(largest > 0) {
-    int exponent = 0;
-    std::frexp(largest, &exponent);
-    a = std::ldexp(a, -exponent), b = std::ldexp(b, -exponent), c = std::ldexp(c, -exponent);
-    d = std::ldexp(d, -exponent);
-    if(!std::isfinite(d))
-      throw Bad_input(who + ": the plane's offset is too large for its normal (a, b, c)");
-  }
+  SAI::scale_plane_coefficients(a, b, c, d);
+  if(!std::isfinite(d))
+    throw Bad_input(who + ": the plane's offset is too large for its normal (a, b, c)");
   const Vector_3d n(a, b, c);
   const double l = n.length();
   if(!(l > 0) || !std::isfinite(l))
