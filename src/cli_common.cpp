@@ -13,19 +13,14 @@
 #include <cctype>
 #include <cmath>
 #include <cerrno>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
 #include <sstream>
-#include <sys/file.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace shape_analysis_cli {
 
@@ -236,181 +231,6 @@ std::vector<long long> read_labels(const std::string& path)
     labels.push_back(v);
   }
   return labels;
-}
-
-namespace {
-
-// Temporary files to remove if the run is interrupted (SIGINT, SIGTERM, SIGHUP): plain buffers,
-// so that the signal handler only reads memory and calls unlink().
-constexpr std::size_t max_temporaries = 4096; // coseg stages two outputs per mesh
-char temporary_names[max_temporaries][4096];
-volatile std::sig_atomic_t temporary_count = 0;
-
-extern "C" void remove_temporaries_and_exit(int signal_number)
-{
-  for(std::sig_atomic_t i = 0; i < temporary_count; ++i)
-    if(temporary_names[i][0] != '\0')
-      ::unlink(temporary_names[i]);
-  ::_exit(128 + signal_number);
-}
-
-void track_temporary(const std::string& name)
-{
-  static bool installed = false;
-  if(!installed) {
-    std::signal(SIGINT, remove_temporaries_and_exit);
-    std::signal(SIGTERM, remove_temporaries_and_exit);
-    std::signal(SIGHUP, remove_temporaries_and_exit);
-    installed = true;
-  }
-  if(temporary_count < std::sig_atomic_t(max_temporaries) && name.size() < sizeof(temporary_names[0])) {
-    std::memcpy(temporary_names[temporary_count], name.c_str(), name.size() + 1);
-    temporary_count = temporary_count + 1;
-  }
-}
-
-void untrack_temporaries()
-{
-  for(std::sig_atomic_t i = 0; i < temporary_count; ++i)
-    temporary_names[i][0] = '\0';
-}
-
-// The path an output really goes to: symbolic links followed, made absolute.
-std::string resolved(const std::string& path)
-{
-  std::error_code ec;
-  fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
-  return ec ? fs::absolute(path).lexically_normal().string() : p.string();
-}
-
-} // namespace
-
-Output_files::~Output_files()
-{
-  if(!m_committed)
-    for(const auto& s : m_staged) {
-      std::error_code ec;
-      fs::remove(s.temporary, ec);
-    }
-  untrack_temporaries();
-}
-
-void Output_files::add_input(const std::string& path)
-{
-  m_inputs.emplace_back(resolved(path), path);
-}
-
-void Output_files::add_output(const std::string& path, const std::string& what,
-                              std::initializer_list<const char*> extensions)
-{
-  if(path.empty())
-    throw Usage_error("the " + what + " is given an empty file name");
-  const std::string target = resolved(path);
-  for(const auto& in : m_inputs)
-    if(in.first == target)
-      throw Usage_error("the " + what + " '" + path + "' would overwrite the input '" + in.second + "'");
-  for(const auto& out : m_outputs)
-    if(out.first == target)
-      throw Usage_error("'" + path + "' is given for two outputs");
-  std::error_code ec;
-  if(fs::is_directory(target, ec))
-    throw Cli_error("cannot write the " + what + " '" + path + "': it is a directory");
-  const bool special = fs::exists(target, ec) && !fs::is_regular_file(target, ec);
-  if(!special && extensions.size() > 0) // (/dev/null, /dev/stdout: any name)
-    require_extension(path, extensions, what);
-  const fs::path dir = fs::path(target).parent_path();
-  if(!fs::is_directory(dir, ec))
-    throw Cli_error("cannot write the " + what + " '" + path + "': directory '" + dir.string() +
-                    "' does not exist");
-  if(special ? ::access(target.c_str(), W_OK) != 0 : ::access(dir.c_str(), W_OK) != 0)
-    throw Cli_error("cannot write the " + what + " '" + path + "': " + std::strerror(errno));
-  m_outputs.emplace_back(target, path);
-}
-
-void Output_files::stage(const std::string& path, bool binary,
-                         const std::function<void(std::ostream&)>& writer)
-{
-  std::string target = resolved(path);
-  std::error_code ec;
-  const bool special = fs::exists(target, ec) && !fs::is_regular_file(target, ec);
-  // The temporary file: beside the target (same file system, so that rename() is atomic), or in
-  // the temporary directory for a special file.
-  const std::string unique(6, 'X'); // replaced by mkstemp()
-  std::string pattern = special ? (fs::temp_directory_path(ec) / ("shape_analysis." + unique)).string()
-                                : target + ".tmp" + unique;
-  std::vector<char> name(pattern.begin(), pattern.end());
-  name.push_back('\0');
-  const int fd = ::mkstemp(name.data());
-  if(fd < 0)
-    throw Cli_error("cannot write '" + path + "': " + std::strerror(errno));
-  // mkstemp() creates the file readable by its owner only; outputs get the usual permissions.
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::fchmod(fd, 0666 & ~mask);
-  ::close(fd);
-  const std::string temporary(name.data());
-  track_temporary(temporary);
-  m_staged.push_back(Staged{temporary, target, path, special});
-  std::ofstream out(temporary, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
-  if(!out)
-    throw Cli_error("cannot write '" + path + "'");
-  writer(out);
-  out.flush();
-  if(!out)
-    throw Cli_error("error while writing '" + path + "' (disk full?)");
-}
-
-void Output_files::commit()
-{
-  // Two runs writing the same outputs commit one after the other, never mixed: an exclusive lock
-  // on every output directory (in a fixed order) while the set is committed.
-  std::vector<std::string> dirs;
-  for(const auto& s : m_staged)
-    if(!s.special)
-      dirs.push_back(fs::path(s.target).parent_path().string());
-  std::sort(dirs.begin(), dirs.end());
-  dirs.erase(std::unique(dirs.begin(), dirs.end()), dirs.end());
-  std::vector<int> locks;
-  struct Unlock
-  {
-    std::vector<int>& fds;
-    ~Unlock()
-    {
-      for(int fd : fds)
-        ::close(fd); // (releases the lock)
-    }
-  } unlock{locks};
-  for(const std::string& d : dirs) {
-    const int fd = ::open(d.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if(fd >= 0) {
-      locks.push_back(fd);
-      while(::flock(fd, LOCK_EX) != 0 && errno == EINTR) {
-      }
-    }
-  }
-  // Special files (a device, a pipe) first: they are the ones that can still fail (a full
-  // device), and the regular files are renamed only once all of them took their content, so
-  // that a failure leaves none of the new set.
-  for(const auto& s : m_staged) {
-    if(!s.special)
-      continue;
-    std::ifstream in(s.temporary, std::ios::binary);
-    errno = 0;
-    std::ofstream out(s.target, std::ios::binary);
-    if(!out || !(out << in.rdbuf()) || !out.flush())
-      throw Cli_error("cannot write '" + s.shown + "'" + (errno ? std::string(": ") + std::strerror(errno) : ""));
-    std::error_code ec;
-    fs::remove(s.temporary, ec);
-  }
-  for(const auto& s : m_staged) {
-    if(s.special)
-      continue;
-    std::error_code ec;
-    fs::rename(s.temporary, s.target, ec);
-    if(ec)
-      throw Cli_error("cannot write '" + s.shown + "': " + ec.message());
-  }
-  m_committed = true;
 }
 
 std::array<unsigned char, 3> label_colour(std::size_t label)
