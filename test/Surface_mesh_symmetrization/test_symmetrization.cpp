@@ -248,6 +248,45 @@ TEST(Detection, OpenMeshIsSupported)
   EXPECT_FALSE(detect(m, 1).empty());
 }
 
+// A flat square is its own mirror image under every plane perpendicular to it: only its border
+// tells its four symmetry planes apart. In a general pose, detection gives those four to rounding
+// error, and symmetrization leaves the square as it is.
+TEST(Detection, FlatSquareGivesItsFourPlanesFromItsBorder)
+{
+  Mesh m;
+  std::vector<Mesh::Vertex_index> v;
+  for(int j = 0; j <= 8; ++j)
+    for(int i = 0; i <= 8; ++i)
+      v.push_back(m.add_vertex(Point(i / 8.0 - 0.5, j / 8.0 - 0.5, 0)));
+  for(int j = 0; j < 8; ++j)
+    for(int i = 0; i < 8; ++i) {
+      const std::size_t a = std::size_t(j * 9 + i);
+      m.add_face(v[a], v[a + 1], v[a + 10]);
+      m.add_face(v[a], v[a + 10], v[a + 9]);
+    }
+  const SAS::Rigid_transform t = motion(1);
+  move(m, t);
+  const std::vector<Symmetry> s = detect(m, 4);
+  ASSERT_EQ(s.size(), 4u);
+  const Vector_3d centre = t(Vector_3d(0, 0, 0));
+  const Vector_3d expected[4] = {t(Vector_3d(1, 0, 0)) - centre, t(Vector_3d(0, 1, 0)) - centre,
+                                 t(Vector_3d(1, 1, 0)) - centre, t(Vector_3d(1, -1, 0)) - centre};
+  for(const Vector_3d& e : expected) {
+    double best = 180;
+    for(const Symmetry& found : s)
+      if(std::abs(SAI::dot(plane_of(found).first, centre) - plane_of(found).second) < 1e-9)
+        best = (std::min)(best, angle_degrees(plane_of(found).first, e));
+    EXPECT_LT(best, 1e-6);
+  }
+  const Mesh input = m;
+  SY::symmetrize(m, std::vector<Symmetry>{s.front()});
+  auto vi = vertices(input).begin();
+  double worst = 0;
+  for(auto w : vertices(m))
+    worst = (std::max)(worst, std::sqrt(CGAL::squared_distance(m.point(w), input.point(*vi++))));
+  EXPECT_LT(worst, 1e-9);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Symmetrization
 

@@ -55,7 +55,11 @@ Detects the planar reflective symmetries of a triangle mesh, global and partial,
    paired with the closest surface point whose normal agrees with the reflected normal (a
    bounding-volume hierarchy of the faces); Gauss-Newton steps on the plane's normal and offset minimize the robustly
    weighted (Tukey) distances of the reflected samples to the tangent planes of their partners,
-   with a reach that shrinks from 15% to 2% of the diagonal. All candidates are first refined on
+   with a reach that shrinks from 15% to 2% of the diagonal. On an open mesh the border takes part
+   too (a quarter as many border points as samples, along the border edges): the reflection of a
+   border point is drawn to the nearest border point, across the border within its face, since a
+   symmetry maps the border onto itself; this pins planes that the surface leaves free (a flat
+   region is its own mirror image under every plane perpendicular to it). All candidates are first refined on
    300 samples; the best distinct ones continue on every sample. When at least 90% of the mesh's
    vertices then have a mirror vertex (the nearest vertex to their reflection, mutually, within a
    tenth of the mean edge length), the plane is also fitted to those pairs (normal along their

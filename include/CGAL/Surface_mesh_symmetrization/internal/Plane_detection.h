@@ -12,7 +12,8 @@
 //      mean shift over the votes);
 //   2. every candidate refined to minimize the symmetry distance: reflected samples paired with
 //      the closest compatible surface points, robust (Tukey) weights with a shrinking reach,
-//      Gauss-Newton steps on the plane's normal and offset (point to plane);
+//      Gauss-Newton steps on the plane's normal and offset (point to plane; border points of an
+//      open surface drawn across the border to the border, which pins flat regions);
 //   2b. a plane under which nearly all vertices have a mirror vertex is fitted to those pairs
 //      (exact for a mesh whose vertices are exact mirror images: a remeshed one), kept when its
 //      score is not worse;
@@ -21,6 +22,7 @@
 //      face lies on the surface).
 
 #include <CGAL/Surface_mesh_symmetrization/Detect_reflective_symmetries_options.h>
+#include <CGAL/Surface_mesh_symmetrization/internal/Surface_boundary.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Surface_index.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Symmetric_connectivity.h>
 
@@ -204,7 +206,8 @@ class Plane_detector
 public:
   Plane_detector(const Surface& surface, const Surface_index& index, const Surface_samples& samples,
                  double diagonal, const Detection_options& o)
-    : m_surface(surface), m_index(index), m_samples(samples), m_diagonal(diagonal), m_o(o)
+    : m_surface(surface), m_index(index), m_samples(samples), m_diagonal(diagonal), m_o(o),
+      m_boundary(surface_boundary(surface, 0.002 * diagonal, 100000, 2000))
   {}
 
   // Candidate planes: principal planes first, then the vote peaks (strongest first).
@@ -266,6 +269,27 @@ public:
         A.noalias() += w * (J * J.transpose());
         b.noalias() += w * r * J;
         weight_sum += w;
+      }
+      // The border maps onto the border: each border sample's mirror image is drawn to the
+      // border across it (in its face), which pins what the surface leaves free (flat regions).
+      const std::size_t n_border = (std::min)(m_boundary.samples.size(), n / 4);
+      for(std::size_t k = 0; k < n_border; ++k) {
+        const Vector_3d& p = m_boundary.points[m_boundary.samples[(k * m_boundary.samples.size()) / n_border]];
+        const double s = plane.signed_distance(p);
+        const Vector_3d y = p - nn * (2 * s);
+        const std::uint32_t c = m_boundary.tree.nearest(y);
+        const double dist = (y - m_boundary.points[c]).length();
+        if(!(dist < reach))
+          continue;
+        const double u = dist / reach;
+        const double w = (1 - u * u) * (1 - u * u);
+        const Vector_3d dya = (nn * SAI::dot(e1, p) + e1 * s) * -2.0;
+        const Vector_3d dyb = (nn * SAI::dot(e2, p) + e2 * s) * -2.0;
+        const Vector_3d dyd = nn * 2.0;
+        const Vector_3d& a = m_boundary.across[c];
+        const Eigen::Vector3d J(SAI::dot(a, dya), SAI::dot(a, dyb), SAI::dot(a, dyd));
+        A.noalias() += w * (J * J.transpose());
+        b.noalias() += w * SAI::dot(a, y - m_boundary.points[c]) * J;
       }
       if(weight_sum < 6)
         break;
@@ -461,6 +485,7 @@ private:
   const Surface_samples& m_samples;
   double m_diagonal;
   Detection_options m_o;
+  Surface_boundary m_boundary;
 };
 
 // The baseline of the benchmarks: an exhaustive search over orientations. Every one of
