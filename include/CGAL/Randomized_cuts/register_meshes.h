@@ -66,7 +66,9 @@ struct Registration_result
   /// the target's principal axes).
   std::size_t number_of_restarts = 0;
   /// The index, in `[0, number_of_restarts)`, of the restart that gave the result (0: the
-  /// principal axes mapped onto each other in order, with their signs as computed).
+  /// principal axes mapped onto each other in order, with their signs as computed), or
+  /// `number_of_restarts` when no restart did better than the meshes as given (the result is then
+  /// the identity).
   std::size_t best_restart = 0;
   /// The number of ICP iterations of the best restart, every stage.
   std::size_t number_of_iterations = 0;
@@ -327,6 +329,9 @@ partition function).
    rotation, scale and translation): this removes the sampling noise from the transform (an exact
    copy is recovered to rounding error) and converges in a few iterations. `rms_distance` is
    measured between sample points and surfaces in the same way.
+7. The identity (the meshes as given) competes with that result and wins a tie: a mesh registered
+   onto itself, or onto a copy already in place, stays where it is, also when it is flat and turns
+   within its plane hardly change the trimmed distance.
 
 Sampling draws from random streams derived from `random_seed`, and the restarts are independent:
 the result is the same for any number of threads.

@@ -426,7 +426,7 @@ struct Restart_alignment_result
   double rms = std::numeric_limits<double>::infinity();         // trimmed RMS distance
   double initial_rms = std::numeric_limits<double>::infinity(); // the same, of the identity
   std::size_t number_of_restarts = 0;
-  std::size_t best_restart = 0; // index in axis_orientations()
+  std::size_t best_restart = 0; // index in axis_orientations(); their number: the identity
   std::size_t iterations = 0;   // ICP iterations of the best restart, every stage
   bool converged = false;       // whether the best restart's last stage converged
   std::vector<double> coarse_rms; // per restart, after the first stage
@@ -529,6 +529,15 @@ align_with_restarts(const std::vector<Vector_3d>& source, const std::vector<Vect
     result.initial_rms = surfaces.trimmed_rms(Similarity_3d(), surface_options, w);
   } else {
     result.initial_rms = full.trimmed_rms(Similarity_3d(), full_options, w);
+  }
+  // The shapes as given compete too: when no restart aligns them better (a shape onto itself, a
+  // flat shape whose in-plane turns the trimmed distance does not see), they stay as they are.
+  if(result.initial_rms <= result.rms) {
+    result.transform = Similarity_3d();
+    result.rms = result.initial_rms;
+    result.best_restart = n_restarts;
+    result.iterations = 0;
+    result.converged = true;
   }
   return result;
 }
