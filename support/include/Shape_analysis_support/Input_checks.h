@@ -10,6 +10,7 @@
 #include <CGAL/Shape_analysis/internal/Ply_header.h>
 
 #include <cerrno>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -62,7 +63,8 @@ inline bool whole_number(const std::string& w, long long& v)
 } // namespace input_checks_internal
 
 // What is wrong with an OFF file (its header, a count, a vertex, a face), or an empty string when
-// this check finds nothing or cannot tell (binary OFF, 4OFF, nOFF: left to CGAL's reader). The
+// this check finds nothing or cannot tell (binary OFF: left to CGAL's reader). The homogeneous and
+// n-dimensional variants (4OFF, nOFF) are refused. The
 // tool runs it before CGAL's reader, which converts a negative vertex index to an unsigned
 // integer (undefined behaviour) and trusts the counts.
 inline std::string diagnose_off(const std::string& path)
@@ -79,8 +81,15 @@ inline std::string diagnose_off(const std::string& path)
     for(const char* prefix : {"ST", "C", "N"})
       if(key.compare(0, std::strlen(prefix), prefix) == 0 && key.size() > 3)
         key.erase(0, std::strlen(prefix));
-    if(key != "OFF")
-      return w[0].find("OFF") != std::string::npos ? std::string() : "the file does not start with 'OFF'";
+    if(key != "OFF") { // (4OFF, nOFF, SKEL and garbled keywords are not checked: refused)
+      if(w[0].find("OFF") == std::string::npos)
+        return "the file does not start with 'OFF'";
+      std::string shown = w[0].substr(0, 24);
+      for(char& c : shown)
+        if(!std::isprint(static_cast<unsigned char>(c)))
+          c = '?';
+      return "the header '" + shown + "' is not one of OFF, COFF, NOFF, CNOFF, STOFF, STCOFF, STCNOFF";
+    }
     if(w.size() > 1 && w[1] == "BINARY")
       return std::string();
   }

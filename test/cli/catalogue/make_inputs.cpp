@@ -204,6 +204,7 @@ void meshes()
                    "4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n");
   text("degenerate.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n3 1 2 2\n");
   text("words.off", "this is not a mesh\n");
+  text("homogeneous.off", "4OFF\n4 1 0\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n3 0 1 2\n");
   text("letters.off", "OFF\n4 4 0\n0 0 0\n1 x 0\n0 1 0\n0 0 1\n" + tail);
   Bytes noise;
   std::uint32_t s = 7;
