@@ -16,6 +16,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <iterator>
 #include <random>
@@ -186,12 +187,19 @@ TEST_F(CommitTest, KilledRunsLeaveTheOldOrTheNewSet)
     const Output_set& after = to_five ? five : three;
     const pid_t pid = start_segment(work, to_five ? 5 : 3, delay);
     ASSERT_GT(pid, 0);
-    if(round % 3 == 0) { // at a random moment of the run (its commit starts after ~50 ms)
-      std::this_thread::sleep_for(std::chrono::microseconds(std::uniform_int_distribution<long>(0, 100000)(random)));
-    } else { // at a random moment of its commit: from the first journal copy on
-      const auto start = std::chrono::steady_clock::now();
-      while(!has_journal(work) && std::chrono::steady_clock::now() - start < std::chrono::seconds(20))
+    // Kill it while it writes its temporary files, at a random moment, or at a random moment of
+    // its commit (from the first journal copy on).
+    const auto start = std::chrono::steady_clock::now();
+    const auto wait_until = [&](const std::function<bool()>& seen) {
+      while(!seen() && std::chrono::steady_clock::now() - start < std::chrono::seconds(20))
         std::this_thread::sleep_for(std::chrono::microseconds(200));
+    };
+    if(round % 3 == 0)
+      wait_until([&] { return !leftovers(work).empty(); });
+    else if(round % 3 == 1)
+      std::this_thread::sleep_for(std::chrono::microseconds(std::uniform_int_distribution<long>(0, 100000)(random)));
+    else {
+      wait_until([&] { return has_journal(work); });
       std::this_thread::sleep_for(std::chrono::microseconds(std::uniform_int_distribution<long>(0, 5 * delay)(random)));
     }
     ::kill(pid, SIGKILL);
@@ -217,8 +225,9 @@ TEST_F(CommitTest, KilledRunsLeaveTheOldOrTheNewSet)
       ++new_complete;
     before = now;
   }
-  // Kills landed before, during and after the decision of a commit.
-  EXPECT_GT(old_kept, 0);
+  // Kills landed before (the temporary files of the killed runs were removed by the next runs),
+  // during and after the decision of a commit.
+  EXPECT_GE(old_kept, 8);
   EXPECT_GT(finished_by_next_run, 0);
   std::cout << "old set kept " << old_kept << ", new set complete " << new_complete
             << ", new set finished by the next run " << finished_by_next_run << "\n";
