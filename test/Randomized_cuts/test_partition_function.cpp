@@ -198,6 +198,67 @@ TEST(PartitionFunction, KMeansAndHierarchicalSamplersAlsoFindTheNecks)
   }
 }
 
+// The hierarchical sampler weighs each cut edge by the levels of the merge sequence at which it
+// is still cut, kept up to date merge by merge (O(E log k)). Against a reference that relabels
+// the whole graph at every level and sums the weights of the levels where each edge is cut.
+TEST(PartitionFunction, HierarchicalLevelsMatchARelabellingReference)
+{
+  namespace RCI = CGAL::Randomized_cuts::internal;
+  const Mesh m = to_mesh(SAS::mesh_procedural_shape(SAS::three_sphere_chain(), 0.25));
+  for(int run = 0; run < 8; ++run) {
+    const std::size_t clusters = std::size_t(run / 2 == 0 ? 2 : run / 2 == 1 ? 7 : run / 2 == 2 ? 40 : 200);
+    SCOPED_TRACE("clusters " + std::to_string(clusters) + (run % 2 ? ", weighted by score" : ""));
+    RCI::Sampling_options o;
+    o.sampling_method = RC::HIERARCHICAL;
+    o.number_of_clusters = clusters;
+    o.score_weighting = run % 2 == 1; // (then the levels' scores are kept up to date too)
+    o.random_seed = 5;
+    const RCI::Mesh_sampling<Mesh, decltype(CGAL::parameters::default_values())>
+      sampling(m, CGAL::parameters::default_values(), o, "test");
+    const RCI::Dual_graph& g = sampling.graph();
+    const RCI::Hierarchical_sampler sampler(g, sampling.options);
+    RCI::Hierarchical_sampler::Workspace w;
+    for(std::size_t index = 0; index < 3; ++index) {
+      RCI::Sample sample;
+      sampler.draw(index, w, sample);
+      // The same merge sequence, replayed from scratch at every level.
+      SAI::Normalized_cut_clustering clustering(g.node_size, g.edge_source, g.edge_target, g.cut_cost);
+      clustering.run(2, {}, {}, sampling.options.randomness, SAI::Random_stream(o.random_seed, index).next(),
+                     RCI::small_segment_fraction * g.total_size());
+      const auto& merges = clustering.merges();
+      const std::size_t n = g.number_of_nodes();
+      const std::size_t top = (std::max)(n - merges.size(), (std::min)(clusters, n));
+      std::map<std::uint32_t, double> expected;
+      double total = 0;
+      SAI::Union_find sets(n);
+      std::size_t applied = 0;
+      for(std::size_t segments = n; segments >= 2; --segments) {
+        if(segments <= top) {
+          std::vector<std::uint32_t> label, cut_edges;
+          std::vector<double> size, cut;
+          const std::size_t k = sets.dense_labels(label);
+          ASSERT_EQ(k, segments);
+          const double score = RCI::cut_of_labelling(g, label, k, cut_edges, size, cut);
+          const double weight = RCI::score_weight(score, sampling.options.score_weighting, g);
+          for(std::uint32_t e : cut_edges)
+            expected[e] += weight;
+          total += weight;
+        }
+        if(segments == 2 || applied == merges.size())
+          break;
+        sets.absorb(merges[applied].survivor, merges[applied].absorbed);
+        ++applied;
+      }
+      EXPECT_NEAR(sample.total_weight, total, 1e-7 * total); // (the incremental score drifts by rounding)
+      ASSERT_EQ(sample.amounts.size(), expected.size());
+      for(const auto& a : sample.amounts) {
+        ASSERT_EQ(expected.count(a.first), 1u) << "edge " << a.first;
+        EXPECT_NEAR(a.second, expected[a.first], 1e-7 * total) << "edge " << a.first;
+      }
+    }
+  }
+}
+
 // Expected length of cut per leg: the sum of value x length over the edges below the torso,
 // by quadrant (legs stand at x < 0 / y < 0, x < 0 / y > 0, x > 0 / y < 0, x > 0 / y > 0).
 std::vector<double> cut_length_per_leg(const Mesh& m, const std::vector<double>& v)
