@@ -56,17 +56,29 @@ Input_mesh read_triangle_mesh(const std::string& path)
       throw Cli_error(std::string("cannot read '") + path + "'" + (e.what() + path.size()));
     }
   }
-  if(ext == ".obj" || ext == ".off") { // (before CGAL's readers, which trust indices and counts)
-    const std::string why = ext == ".obj" ? CGAL::Shape_analysis_support::check_obj_faces(path)
-                                          : CGAL::Shape_analysis_support::diagnose_off(path);
+  Input_mesh result;
+  std::vector<std::vector<std::size_t>> polygons;
+  bool ok = false, read = false;
+  if(ext == ".off") { // ASCII OFF: our checked reader (CGAL's trusts sizes, indices and counts)
+    std::vector<std::array<double, 3>> positions;
+    bool binary = false;
+    const std::string why = CGAL::Shape_analysis_support::read_ascii_off(path, positions, polygons, binary);
+    if(!why.empty())
+      throw Cli_error("cannot read '" + path + "': " + why);
+    if(!binary) {
+      result.points.reserve(positions.size());
+      for(const auto& p : positions)
+        result.points.emplace_back(p[0], p[1], p[2]);
+      ok = read = true;
+    }
+  } else if(ext == ".obj") { // (before CGAL's reader, which trusts the indices)
+    const std::string why = CGAL::Shape_analysis_support::check_obj_faces(path);
     if(!why.empty())
       throw Cli_error("cannot read '" + path + "': " + why);
   }
-  Input_mesh result;
-  std::vector<std::vector<std::size_t>> polygons;
-  bool ok = false;
   try {
-    ok = CGAL::IO::read_polygon_soup(path, result.points, polygons, CGAL::parameters::verbose(false));
+    if(!read)
+      ok = CGAL::IO::read_polygon_soup(path, result.points, polygons, CGAL::parameters::verbose(false));
   } catch(const std::exception&) {
     ok = false;
   }

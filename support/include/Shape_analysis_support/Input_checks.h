@@ -9,6 +9,7 @@
 
 #include <CGAL/Shape_analysis/internal/Ply_header.h>
 
+#include <array>
 #include <cerrno>
 #include <cctype>
 #include <cmath>
@@ -62,14 +63,22 @@ inline bool whole_number(const std::string& w, long long& v)
 
 } // namespace input_checks_internal
 
-// What is wrong with an OFF file (its header, a count, a vertex, a face), or an empty string when
-// this check finds nothing or cannot tell (binary OFF: left to CGAL's reader). The homogeneous and
-// n-dimensional variants (4OFF, nOFF) are refused. The
-// tool runs it before CGAL's reader, which converts a negative vertex index to an unsigned
-// integer (undefined behaviour) and trusts the counts.
-inline std::string diagnose_off(const std::string& path)
+// Reads an ASCII OFF file ([ST][C][N]OFF) with every check on the way: its header, the counts,
+// that each vertex line starts with three finite numbers (its position; normals, colours and
+// texture coordinates after them are ignored), that each face line is "n i1 ... in" with n >= 3
+// and indices of existing vertices (a colour after them is ignored). Returns what is wrong, or an
+// empty string when the file was read into `points` and `faces`. A binary OFF is not read:
+// `binary` is set and the file is left to CGAL's reader. The homogeneous and n-dimensional
+// variants (4OFF, nOFF) are refused. CGAL's ASCII reader is not used: it converts a negative
+// size or index to an unsigned integer (undefined behaviour), trusts the counts and reads past
+// the end of a short line of an STOFF file (all found by fuzzing).
+inline std::string read_ascii_off(const std::string& path, std::vector<std::array<double, 3>>& points,
+                                  std::vector<std::vector<std::size_t>>& faces, bool& binary)
 {
   using namespace input_checks_internal;
+  binary = false;
+  points.clear();
+  faces.clear();
   std::ifstream in(path);
   std::size_t line = 0;
   std::vector<std::string> w;
@@ -90,8 +99,10 @@ inline std::string diagnose_off(const std::string& path)
           c = '?';
       return "the header '" + shown + "' is not one of OFF, COFF, NOFF, CNOFF, STOFF, STCOFF, STCNOFF";
     }
-    if(w.size() > 1 && w[1] == "BINARY")
+    if(w.size() > 1 && w[1] == "BINARY") {
+      binary = true;
       return std::string();
+    }
   }
   w.erase(w.begin());
   if(w.empty() && !next_words(in, line, w))
@@ -102,8 +113,9 @@ inline std::string diagnose_off(const std::string& path)
   for(long long v = 0; v < nv; ++v) {
     if(!next_words(in, line, w))
       return "the header announces " + std::to_string(nv) + " vertices, the file ends after " + std::to_string(v);
-    double x = 0;
+    std::array<double, 3> position{};
     for(std::size_t k = 0; k < 3; ++k) {
+      double& x = position[k];
       if(k >= w.size())
         return "line " + std::to_string(line) + ": vertex " + std::to_string(v) + " has fewer than 3 coordinates";
       char* end = nullptr;
@@ -113,6 +125,7 @@ inline std::string diagnose_off(const std::string& path)
       if(!std::isfinite(x))
         return "line " + std::to_string(line) + ": vertex " + std::to_string(v) + ": '" + w[k] + "' is not a finite number";
     }
+    points.push_back(position);
   }
   for(long long f = 0; f < nf; ++f) {
     if(!next_words(in, line, w))
@@ -120,6 +133,7 @@ inline std::string diagnose_off(const std::string& path)
     long long n = 0, index = 0;
     if(!whole_number(w[0], n) || n < 3 || std::size_t(n) + 1 > w.size())
       return "line " + std::to_string(line) + ": face " + std::to_string(f) + " is not 'n i1 ... in' with n >= 3";
+    faces.emplace_back();
     for(long long k = 1; k <= n; ++k) {
       if(!whole_number(w[std::size_t(k)], index))
         return "line " + std::to_string(line) + ": face " + std::to_string(f) + ": '" + w[std::size_t(k)] +
@@ -127,6 +141,7 @@ inline std::string diagnose_off(const std::string& path)
       if(index < 0 || index >= nv)
         return "line " + std::to_string(line) + ": face " + std::to_string(f) + " refers to vertex " +
                std::to_string(index) + "; the vertices are 0 to " + std::to_string(nv - 1);
+      faces.back().push_back(std::size_t(index));
     }
   }
   return std::string();

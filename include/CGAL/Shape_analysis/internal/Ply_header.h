@@ -35,9 +35,9 @@ struct Ply_header
 // PLY header line, a format other than ascii / binary_little_endian / binary_big_endian (or two
 // formats), an element given twice or with a count that is not a whole number, a property of an
 // unknown type, outside an element or given twice in an element, or a vertex element without
-// scalar x, y and z properties of type float or double (nx, ny, nz too, when present). (CGAL's
-// reader trusts the header: two properties named x of different types, or an integer y, made it
-// call a member of a null pointer.)
+// scalar x, y and z properties of one type, float or double (nx, ny, nz too, when present).
+// (CGAL's reader trusts the header: two properties named x of different types, an integer y, or a
+// double x beside a float z made it call a member of a null pointer.)
 inline Ply_header read_ply_header(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -54,6 +54,7 @@ inline Ply_header read_ply_header(const std::string& path)
   std::size_t read = 0, number = 0;
   bool magic = false, end = false, in_vertex = false, has_vertex = false;
   std::vector<std::string> elements, properties, vertex_lists;
+  std::string coordinate_type, normal_type; // float or double, once seen
   while(std::getline(in, line)) {
     ++number;
     read += line.size() + 1;
@@ -114,6 +115,21 @@ inline Ply_header read_ply_header(const std::string& path)
         for(const char* c : {"x", "y", "z", "nx", "ny", "nz"})
           if(name == c && !list && !real)
             throw bad("the vertex property '" + name + "' is " + type + "; coordinates and normals must be float or double");
+        // Nor does it take x, y, z (nx, ny, nz) of different types (a null pointer again).
+        const std::string precision = (type == "float" || type == "float32") ? "float" : "double";
+        for(const char* group : {"xyz", "n"}) {
+          const bool normal = group[0] == 'n';
+          const bool in_group = normal ? (name == "nx" || name == "ny" || name == "nz")
+                                       : (name == "x" || name == "y" || name == "z");
+          if(!in_group || !real || list)
+            continue;
+          std::string& first = normal ? normal_type : coordinate_type;
+          if(first.empty())
+            first = precision;
+          else if(first != precision)
+            throw bad(std::string("the vertex property '") + name + "' is " + type + " and another " +
+                      (normal ? "normal" : "coordinate") + " is " + first + "; they must have one type");
+        }
       }
     } else if(word == "end_header") {
       end = true;
