@@ -4,6 +4,7 @@
 # bad-input catalogue's inputs, the test meshes and the catalogue's command lines. Prints the
 # executions and findings per target; crash inputs go to build-fuzz/findings/<target>/.
 # Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   (targets: see test/fuzz/fuzz_inputs.cpp)
+# SHAPE_ANALYSIS_FUZZ_DIR: the build folder instead of build-fuzz/.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-600}"
@@ -13,7 +14,7 @@ if [ "${#targets[@]}" -eq 0 ]; then
   targets=(off ply_mesh obj stl ply xyz las kitti seg locations truth labels model osm command_line)
 fi
 "$root/scripts/install_dependencies.sh" clang libclang-rt-14-dev
-out="$root/build-fuzz"
+out="${SHAPE_ANALYSIS_FUZZ_DIR:-$root/build-fuzz}" # (another folder: a second pass beside a running one)
 cmake -S "$root" -B "$out" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
   -DSHAPE_ANALYSIS_SANITIZE=ON -DSHAPE_ANALYSIS_BUILD_FUZZERS=ON -DSHAPE_ANALYSIS_BUILD_TESTS=OFF \
