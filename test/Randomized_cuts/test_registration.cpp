@@ -410,18 +410,7 @@ TEST(Registration, ShapesOfTheSameClass)
 // the hard case: its turns within its plane change only the trimmed distance at its border.
 TEST(Registration, MeshOntoItselfIsTheIdentityAlsoWhenFlat)
 {
-  Mesh flat;
-  std::vector<vertex_descriptor> v;
-  for(int j = 0; j <= 8; ++j)
-    for(int i = 0; i <= 8; ++i)
-      v.push_back(flat.add_vertex(Point(i / 8.0 - 0.5, j / 8.0 - 0.5, 0)));
-  for(int j = 0; j < 8; ++j)
-    for(int i = 0; i < 8; ++i) {
-      const std::size_t a = std::size_t(j * 9 + i);
-      flat.add_face(v[a], v[a + 1], v[a + 10]);
-      flat.add_face(v[a], v[a + 10], v[a + 9]);
-    }
-  for(const Mesh& m : {flat, to_mesh(animal(0))}) {
+  for(const Mesh& m : {to_mesh(SAS::flat_square(8)), to_mesh(animal(0))}) {
     const auto r = RC::register_meshes(m, m, RC::parameters::number_of_samples(10).random_seed(3));
     EXPECT_EQ(r.best_restart, r.number_of_restarts);
     EXPECT_EQ(r.rms_distance, r.initial_rms_distance);

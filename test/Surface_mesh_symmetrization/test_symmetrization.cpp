@@ -253,17 +253,7 @@ TEST(Detection, OpenMeshIsSupported)
 // error, and symmetrization leaves the square as it is.
 TEST(Detection, FlatSquareGivesItsFourPlanesFromItsBorder)
 {
-  Mesh m;
-  std::vector<Mesh::Vertex_index> v;
-  for(int j = 0; j <= 8; ++j)
-    for(int i = 0; i <= 8; ++i)
-      v.push_back(m.add_vertex(Point(i / 8.0 - 0.5, j / 8.0 - 0.5, 0)));
-  for(int j = 0; j < 8; ++j)
-    for(int i = 0; i < 8; ++i) {
-      const std::size_t a = std::size_t(j * 9 + i);
-      m.add_face(v[a], v[a + 1], v[a + 10]);
-      m.add_face(v[a], v[a + 10], v[a + 9]);
-    }
+  Mesh m = to_mesh(SAS::flat_square(8));
   const SAS::Rigid_transform t = motion(1);
   move(m, t);
   const std::vector<Symmetry> s = detect(m, 4);

@@ -502,6 +502,27 @@ inline Procedural_shape separate_boxes(std::size_t n, double gap = 1.0, std::uin
   return s;
 }
 
+// A flat square [-0.5, 0.5] x [-0.5, 0.5] at z = 0 of n x n cells, two triangles a cell (each cut
+// along the same diagonal), one label: an open surface whose symmetry planes (x = 0, y = 0 and
+// the diagonals) only its border tells apart, and whose turns within its plane the surface alone
+// does not show.
+inline Labelled_triangle_mesh flat_square(std::size_t n)
+{
+  Labelled_triangle_mesh m;
+  for(std::size_t j = 0; j <= n; ++j)
+    for(std::size_t i = 0; i <= n; ++i)
+      m.points.push_back({{double(i) / double(n) - 0.5, double(j) / double(n) - 0.5, 0.0}});
+  for(std::size_t j = 0; j < n; ++j)
+    for(std::size_t i = 0; i < n; ++i) {
+      const std::size_t a = j * (n + 1) + i;
+      m.triangles.push_back({{a, a + 1, a + n + 2}});
+      m.triangles.push_back({{a, a + n + 2, a + n + 1}});
+    }
+  m.labels.assign(m.triangles.size(), 0);
+  m.number_of_labels = 1;
+  return m;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Utilities
 
