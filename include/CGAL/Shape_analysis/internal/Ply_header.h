@@ -30,14 +30,74 @@ struct Ply_header
   bool has_faces = false;                    // an element "face"
 };
 
+// The size in bytes of a PLY scalar type (a known one).
+inline std::size_t type_size(const std::string& t)
+{
+  if(t == "char" || t == "uchar" || t == "int8" || t == "uint8")
+    return 1;
+  if(t == "short" || t == "ushort" || t == "int16" || t == "uint16")
+    return 2;
+  if(t == "double" || t == "float64")
+    return 8;
+  return 4;
+}
+
+// What is wrong with the type of vertex property `name` for CGAL's reader, or an empty string.
+// It takes coordinates and normals as float or double only (another type made it call a member of
+// a null pointer), and x, y, z (nx, ny, nz) of one type (a double x beside a float z: the same).
+// `coordinate_type` / `normal_type` hold the first type seen in each group ("float", "double").
+inline std::string vertex_property_type_error(const std::string& name, const std::string& type, bool list,
+                                              std::string& coordinate_type, std::string& normal_type)
+{
+  const bool coordinate = name == "x" || name == "y" || name == "z";
+  const bool normal = name == "nx" || name == "ny" || name == "nz";
+  if(list || !(coordinate || normal))
+    return std::string();
+  const bool real = type == "float" || type == "double" || type == "float32" || type == "float64";
+  if(!real)
+    return "the vertex property '" + name + "' is " + type + "; coordinates and normals must be float or double";
+  const std::string precision = (type == "float" || type == "float32") ? "float" : "double";
+  std::string& first = coordinate ? coordinate_type : normal_type;
+  if(first.empty())
+    first = precision;
+  else if(first != precision)
+    return "the vertex property '" + name + "' is " + type + " and another " +
+           (coordinate ? "coordinate" : "normal") + " is " + first + "; they must have one type";
+  return std::string();
+}
+
+// Bad_input unless the vertex element has scalar x, y and z, and the file can hold as many
+// vertices as announced (CGAL's reader reserves memory for the count first): at least two
+// characters per ASCII property ("0 "), the properties' sizes in binary.
+inline void check_vertex_element(const std::string& path, const Ply_header& h,
+                                 const std::vector<std::string>& vertex_lists, std::ifstream& in,
+                                 std::size_t header_bytes, std::size_t vertex_bytes)
+{
+  for(const char* c : {"x", "y", "z"}) {
+    if(std::find(h.vertex_properties.begin(), h.vertex_properties.end(), c) == h.vertex_properties.end())
+      throw Bad_input(path + ": the PLY file's vertices have no '" + c + "' property (they need x, y and z)");
+    if(std::find(vertex_lists.begin(), vertex_lists.end(), c) != vertex_lists.end())
+      throw Bad_input(path + ": the PLY file's vertex property '" + std::string(c) + "' is a list, not a number");
+  }
+  in.clear();
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  const double data = size > std::streamoff(header_bytes) ? double(size - std::streamoff(header_bytes)) : 0.0;
+  const double per_vertex = h.format == "ascii" ? 2.0 * double(h.vertex_properties.size()) : double(vertex_bytes);
+  if(double(h.vertices) * per_vertex > data)
+    throw Bad_input(path + ": the PLY header announces " + std::to_string(h.vertices) + " vertices; the " +
+                    std::to_string(std::size_t(data)) + " bytes after the header cannot hold them");
+}
+
 // The header of the PLY file `path`; Bad_input, its message starting with `path`, when the file
 // does not start with "ply", has no "end_header" within its first 64 KiB, a line that is not a
 // PLY header line, a format other than ascii / binary_little_endian / binary_big_endian (or two
 // formats), an element given twice or with a count that is not a whole number, a property of an
 // unknown type, outside an element or given twice in an element, or a vertex element without
-// scalar x, y and z properties of one type, float or double (nx, ny, nz too, when present).
-// (CGAL's reader trusts the header: two properties named x of different types, an integer y, or a
-// double x beside a float z made it call a member of a null pointer.)
+// scalar x, y and z properties of one type, float or double (nx, ny, nz too, when present), or
+// with more vertices than the file can hold. (CGAL's reader trusts the header: two properties
+// named x of different types, an integer y, or a double x beside a float z made it call a member
+// of a null pointer; a count of 10^9 in a small file made it reserve gigabytes.)
 inline Ply_header read_ply_header(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -55,6 +115,7 @@ inline Ply_header read_ply_header(const std::string& path)
   bool magic = false, end = false, in_vertex = false, has_vertex = false;
   std::vector<std::string> elements, properties, vertex_lists;
   std::string coordinate_type, normal_type; // float or double, once seen
+  std::size_t vertex_bytes = 0;              // the least bytes of a binary vertex
   while(std::getline(in, line)) {
     ++number;
     read += line.size() + 1;
@@ -106,30 +167,13 @@ inline Ply_header read_ply_header(const std::string& path)
         throw bad("a second property '" + name + "' in the element '" + elements.back() + "'");
       properties.push_back(name);
       if(in_vertex) {
+        vertex_bytes += type_size(list ? count_type : type); // (a list may be empty)
         h.vertex_properties.push_back(name);
         if(list)
           vertex_lists.push_back(name);
-        // CGAL's reader takes coordinates and normals as float or double only (another type made
-        // it call a member of a null pointer).
-        const bool real = type == "float" || type == "double" || type == "float32" || type == "float64";
-        for(const char* c : {"x", "y", "z", "nx", "ny", "nz"})
-          if(name == c && !list && !real)
-            throw bad("the vertex property '" + name + "' is " + type + "; coordinates and normals must be float or double");
-        // Nor does it take x, y, z (nx, ny, nz) of different types (a null pointer again).
-        const std::string precision = (type == "float" || type == "float32") ? "float" : "double";
-        for(const char* group : {"xyz", "n"}) {
-          const bool normal = group[0] == 'n';
-          const bool in_group = normal ? (name == "nx" || name == "ny" || name == "nz")
-                                       : (name == "x" || name == "y" || name == "z");
-          if(!in_group || !real || list)
-            continue;
-          std::string& first = normal ? normal_type : coordinate_type;
-          if(first.empty())
-            first = precision;
-          else if(first != precision)
-            throw bad(std::string("the vertex property '") + name + "' is " + type + " and another " +
-                      (normal ? "normal" : "coordinate") + " is " + first + "; they must have one type");
-        }
+        const std::string why = vertex_property_type_error(name, type, list, coordinate_type, normal_type);
+        if(!why.empty())
+          throw bad(why);
       }
     } else if(word == "end_header") {
       end = true;
@@ -147,12 +191,7 @@ inline Ply_header read_ply_header(const std::string& path)
                     "' is not ascii, binary_little_endian or binary_big_endian");
   if(!has_vertex)
     throw Bad_input(path + ": the PLY file has no 'vertex' element");
-  for(const char* c : {"x", "y", "z"}) {
-    if(std::find(h.vertex_properties.begin(), h.vertex_properties.end(), c) == h.vertex_properties.end())
-      throw Bad_input(path + ": the PLY file's vertices have no '" + c + "' property (they need x, y and z)");
-    if(std::find(vertex_lists.begin(), vertex_lists.end(), c) != vertex_lists.end())
-      throw Bad_input(path + ": the PLY file's vertex property '" + std::string(c) + "' is a list, not a number");
-  }
+  check_vertex_element(path, h, vertex_lists, in, read, vertex_bytes);
   return h;
 }
 
