@@ -68,7 +68,7 @@ for t in "${targets[@]}"; do
     "$out/test/fuzz/shape_analysis_fuzz" "$out/corpus/$t" -max_total_time="$seconds" -timeout=20 \
     -rss_limit_mb=2560 -malloc_limit_mb=2048 -print_final_stats=1 -close_fd_mask=1 \
     -artifact_prefix="$out/findings/$t/" >"$out/logs/$t.log" 2>&1 || true
-  executions="$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$out/logs/$t.log" | grep -o '[0-9]*$' || echo 0)"
+  executions="$(grep -ao 'stat::number_of_executed_units: *[0-9]*' "$out/logs/$t.log" | grep -o '[0-9]*$' || echo 0)"
   findings="$(find "$out/findings/$t" -type f | wc -l)"
   printf '%-14s %12s %9s\n' "$t" "${executions:-0}" "$findings"
   if [ "$findings" -gt 0 ]; then status=1; fi
