@@ -12,6 +12,7 @@
 #include <CGAL/Shape_analysis/Bad_input.h>
 
 #include <algorithm>
+#include <cctype>
 #include <iterator>
 #include <fstream>
 #include <sstream>
@@ -66,12 +67,22 @@ inline std::string vertex_property_type_error(const std::string& name, const std
   return std::string();
 }
 
-// Bad_input unless the vertex element has scalar x, y and z, and the file can hold as many
-// vertices as announced (CGAL's reader reserves memory for the count first): at least two
-// characters per ASCII property ("0 "), the properties' sizes in binary.
-inline void check_vertex_element(const std::string& path, const Ply_header& h,
-                                 const std::vector<std::string>& vertex_lists, std::ifstream& in,
-                                 std::size_t header_bytes, std::size_t vertex_bytes)
+// An element of a PLY header: its name, count, and the least bytes of one of its items.
+struct Ply_element_size
+{
+  std::string name;
+  double count = 0;
+  std::size_t properties = 0;
+  double binary_bytes = 0; // the sizes of its properties (a list's count only: it may be empty)
+};
+
+// Bad_input unless the vertex element has scalar x, y and z, and the file can hold the items that
+// the header announces (CGAL's reader reserves memory for the vertex count first, and loops over
+// the items of every element): at least two characters per ASCII property ("0 ") or the
+// properties' sizes in binary, and no more items of any element than bytes.
+inline void check_elements(const std::string& path, const Ply_header& h,
+                           const std::vector<std::string>& vertex_lists, std::ifstream& in,
+                           std::size_t header_bytes, const std::vector<Ply_element_size>& elements)
 {
   for(const char* c : {"x", "y", "z"}) {
     if(std::find(h.vertex_properties.begin(), h.vertex_properties.end(), c) == h.vertex_properties.end())
@@ -83,10 +94,22 @@ inline void check_vertex_element(const std::string& path, const Ply_header& h,
   in.seekg(0, std::ios::end);
   const std::streamoff size = in.tellg();
   const double data = size > std::streamoff(header_bytes) ? double(size - std::streamoff(header_bytes)) : 0.0;
-  const double per_vertex = h.format == "ascii" ? 2.0 * double(h.vertex_properties.size()) : double(vertex_bytes);
-  if(double(h.vertices) * per_vertex > data)
-    throw Bad_input(path + ": the PLY header announces " + std::to_string(h.vertices) + " vertices; the " +
-                    std::to_string(std::size_t(data)) + " bytes after the header cannot hold them");
+  double needed = 0;
+  for(const Ply_element_size& e : elements) {
+    std::string shown = e.name.substr(0, 24);
+    for(char& c : shown)
+      if(!std::isprint(static_cast<unsigned char>(c)))
+        c = '?';
+    const double item = h.format == "ascii" ? 2.0 * double(e.properties) : e.binary_bytes;
+    needed += e.count * item;
+    if(e.count * item > data || e.count > data)
+      throw Bad_input(path + ": the PLY header announces " + std::to_string(std::size_t(e.count)) + " " +
+                      (e.name == "vertex" ? std::string("vertices") : "'" + shown + "' elements") +
+                      "; the " + std::to_string(std::size_t(data)) + " bytes after the header cannot hold them");
+  }
+  if(needed > data)
+    throw Bad_input(path + ": the PLY header's elements need at least " + std::to_string(std::size_t(needed)) +
+                    " bytes; the file has " + std::to_string(std::size_t(data)) + " after the header");
 }
 
 // The header of the PLY file `path`; Bad_input, its message starting with `path`, when the file
@@ -95,7 +118,7 @@ inline void check_vertex_element(const std::string& path, const Ply_header& h,
 // formats), an element given twice or with a count that is not a whole number, a property of an
 // unknown type, outside an element or given twice in an element, or a vertex element without
 // scalar x, y and z properties of one type, float or double (nx, ny, nz too, when present), or
-// with more vertices than the file can hold. (CGAL's reader trusts the header: two properties
+// with more items than the file can hold. (CGAL's reader trusts the header: two properties
 // named x of different types, an integer y, or a double x beside a float z made it call a member
 // of a null pointer; a count of 10^9 in a small file made it reserve gigabytes.)
 inline Ply_header read_ply_header(const std::string& path)
@@ -115,7 +138,7 @@ inline Ply_header read_ply_header(const std::string& path)
   bool magic = false, end = false, in_vertex = false, has_vertex = false;
   std::vector<std::string> elements, properties, vertex_lists;
   std::string coordinate_type, normal_type; // float or double, once seen
-  std::size_t vertex_bytes = 0;              // the least bytes of a binary vertex
+  std::vector<Ply_element_size> sizes;
   while(std::getline(in, line)) {
     ++number;
     read += line.size() + 1;
@@ -146,6 +169,7 @@ inline Ply_header read_ply_header(const std::string& path)
       if(std::find(elements.begin(), elements.end(), name) != elements.end())
         throw bad("a second element '" + name + "'");
       elements.push_back(name);
+      sizes.push_back(Ply_element_size{name, double(std::stoull(count)), 0, 0.0});
       properties.clear();
       in_vertex = name == "vertex";
       has_vertex = has_vertex || in_vertex;
@@ -166,8 +190,9 @@ inline Ply_header read_ply_header(const std::string& path)
       if(std::find(properties.begin(), properties.end(), name) != properties.end())
         throw bad("a second property '" + name + "' in the element '" + elements.back() + "'");
       properties.push_back(name);
+      sizes.back().properties += 1;
+      sizes.back().binary_bytes += double(type_size(list ? count_type : type));
       if(in_vertex) {
-        vertex_bytes += type_size(list ? count_type : type); // (a list may be empty)
         h.vertex_properties.push_back(name);
         if(list)
           vertex_lists.push_back(name);
@@ -191,7 +216,7 @@ inline Ply_header read_ply_header(const std::string& path)
                     "' is not ascii, binary_little_endian or binary_big_endian");
   if(!has_vertex)
     throw Bad_input(path + ": the PLY file has no 'vertex' element");
-  check_vertex_element(path, h, vertex_lists, in, read, vertex_bytes);
+  check_elements(path, h, vertex_lists, in, read, sizes);
   return h;
 }
 
