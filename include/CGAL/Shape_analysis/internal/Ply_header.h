@@ -31,6 +31,17 @@ struct Ply_header
   bool has_faces = false;                    // an element "face"
 };
 
+// Whether `name` holds a control character (a NUL byte cuts it short where CGAL's reader looks
+// properties up by C string: two properties "x\0..." of different types made it call a member of
+// a null pointer).
+inline bool has_control_character(const std::string& name)
+{
+  return std::any_of(name.begin(), name.end(), [](char c) {
+    const unsigned char u = static_cast<unsigned char>(c);
+    return u < 0x20 || u == 0x7f;
+  });
+}
+
 // The size in bytes of a PLY scalar type (a known one).
 inline std::size_t type_size(const std::string& t)
 {
@@ -164,8 +175,8 @@ inline Ply_header read_ply_header(const std::string& path)
       std::string name, count;
       words >> name >> count;
       const bool whole = !count.empty() && count.find_first_not_of("0123456789") == std::string::npos && count.size() < 19;
-      if(name.empty() || !whole || (words >> extra))
-        throw bad("expected 'element NAME COUNT'");
+      if(name.empty() || !whole || (words >> extra) || has_control_character(name))
+        throw bad("expected 'element NAME COUNT' (a name of printable characters)");
       if(std::find(elements.begin(), elements.end(), name) != elements.end())
         throw bad("a second element '" + name + "'");
       elements.push_back(name);
@@ -185,8 +196,10 @@ inline Ply_header read_ply_header(const std::string& path)
       if(list)
         words >> count_type >> type;
       words >> name;
-      if(name.empty() || (words >> extra) || !is_type(type) || (list && !is_type(count_type)))
-        throw bad("expected 'property TYPE NAME' or 'property list TYPE TYPE NAME' with PLY types");
+      if(name.empty() || (words >> extra) || !is_type(type) || (list && !is_type(count_type)) ||
+         has_control_character(name))
+        throw bad("expected 'property TYPE NAME' or 'property list TYPE TYPE NAME' with PLY types "
+                  "(a name of printable characters)");
       if(std::find(properties.begin(), properties.end(), name) != properties.end())
         throw bad("a second property '" + name + "' in the element '" + elements.back() + "'");
       properties.push_back(name);
