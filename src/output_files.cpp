@@ -3,7 +3,8 @@
 
 // Output_files: the outputs of a run written as one set.
 //
-// Each output is first written to a temporary file beside its target ("<target>.tmp-<pid>-XXXXXX").
+// Each output is first written to a temporary file beside its target ("<target>.tmp-<pid>-" and six
+// random characters).
 // commit() then, with every output folder locked (flock, in sorted order, so that two runs commit
 // one after the other):
 //  1. completes or discards what an interrupted run left in these folders (below);
@@ -99,8 +100,10 @@ void after_step()
 const std::string journal_prefix = ".shape_analysis-journal-";
 const std::string journal_part_prefix = ".shape_analysis-journal.part-";
 const std::string journal_magic = "shape_analysis journal 1";
+const std::string mkstemp_template(6, 'X'); // the end of a name that mkstemp() makes unique
 
-// The process that wrote "<target>.tmp-<pid>-XXXXXX", when `name` is such a name.
+// The process that wrote the temporary file `name` ("<target>.tmp-<pid>-" and six characters),
+// when it is one.
 bool temporary_owner(const std::string& name, long& pid)
 {
   const std::size_t at = name.rfind(".tmp-");
@@ -283,7 +286,7 @@ void recover(Folder_locks& locks)
 // Writes a copy of the journal at `path` through a part file renamed into place.
 void write_journal_copy(const std::string& path, const std::string& text)
 {
-  std::string pattern = (fs::path(path).parent_path() / (journal_part_prefix + "XXXXXX")).string();
+  std::string pattern = (fs::path(path).parent_path() / (journal_part_prefix + mkstemp_template)).string();
   const int fd = ::mkstemp(pattern.data());
   if(fd < 0)
     throw Cli_error("cannot write the outputs' journal in '" + folder_of(path) + "': " + std::strerror(errno));
@@ -381,9 +384,8 @@ void Output_files::stage(const std::string& path, bool binary,
   // The temporary file: beside the target (same file system, so that rename() is atomic), named
   // after this process (so that a later run can tell it is left over), or in the temporary
   // directory for a special file.
-  const std::string unique(6, 'X'); // replaced by mkstemp()
-  std::string pattern = special ? (fs::temp_directory_path(ec) / ("shape_analysis." + unique)).string()
-                                : target + ".tmp-" + std::to_string(::getpid()) + "-" + unique;
+  std::string pattern = special ? (fs::temp_directory_path(ec) / ("shape_analysis." + mkstemp_template)).string()
+                                : target + ".tmp-" + std::to_string(::getpid()) + "-" + mkstemp_template;
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   const int fd = ::mkstemp(name.data());

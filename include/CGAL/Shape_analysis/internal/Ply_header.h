@@ -147,9 +147,9 @@ inline Ply_header read_ply_header(const std::string& path)
   std::string line;
   std::size_t read = 0, number = 0;
   bool magic = false, end = false, in_vertex = false, has_vertex = false;
-  std::vector<std::string> elements, properties, vertex_lists;
+  std::vector<std::string> properties, vertex_lists;
   std::string coordinate_type, normal_type; // float or double, once seen
-  std::vector<Ply_element_size> sizes;
+  std::vector<Ply_element_size> elements;
   while(std::getline(in, line)) {
     ++number;
     read += line.size() + 1;
@@ -177,16 +177,16 @@ inline Ply_header read_ply_header(const std::string& path)
       const bool whole = !count.empty() && count.find_first_not_of("0123456789") == std::string::npos && count.size() < 19;
       if(name.empty() || !whole || (words >> extra) || has_control_character(name))
         throw bad("expected 'element NAME COUNT' (a name of printable characters)");
-      if(std::find(elements.begin(), elements.end(), name) != elements.end())
+      if(std::any_of(elements.begin(), elements.end(), [&](const Ply_element_size& e) { return e.name == name; }))
         throw bad("a second element '" + name + "'");
-      elements.push_back(name);
-      sizes.push_back(Ply_element_size{name, double(std::stoull(count)), 0, 0.0});
+      const unsigned long long items = std::stoull(count);
+      elements.push_back(Ply_element_size{name, double(items), 0, 0.0});
       properties.clear();
       in_vertex = name == "vertex";
       has_vertex = has_vertex || in_vertex;
       h.has_faces = h.has_faces || name == "face";
       if(in_vertex)
-        h.vertices = std::size_t(std::stoull(count));
+        h.vertices = std::size_t(items);
     } else if(word == "property") {
       if(elements.empty())
         throw bad("a property outside any element");
@@ -201,10 +201,10 @@ inline Ply_header read_ply_header(const std::string& path)
         throw bad("expected 'property TYPE NAME' or 'property list TYPE TYPE NAME' with PLY types "
                   "(a name of printable characters)");
       if(std::find(properties.begin(), properties.end(), name) != properties.end())
-        throw bad("a second property '" + name + "' in the element '" + elements.back() + "'");
+        throw bad("a second property '" + name + "' in the element '" + elements.back().name + "'");
       properties.push_back(name);
-      sizes.back().properties += 1;
-      sizes.back().binary_bytes += double(type_size(list ? count_type : type));
+      elements.back().properties += 1;
+      elements.back().binary_bytes += double(type_size(list ? count_type : type));
       if(in_vertex) {
         h.vertex_properties.push_back(name);
         if(list)
@@ -229,7 +229,7 @@ inline Ply_header read_ply_header(const std::string& path)
                     "' is not ascii, binary_little_endian or binary_big_endian");
   if(!has_vertex)
     throw Bad_input(path + ": the PLY file has no 'vertex' element");
-  check_elements(path, h, vertex_lists, in, read, sizes);
+  check_elements(path, h, vertex_lists, in, read, elements);
   return h;
 }
 

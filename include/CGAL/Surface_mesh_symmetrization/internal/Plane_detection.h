@@ -207,7 +207,7 @@ public:
   Plane_detector(const Surface& surface, const Surface_index& index, const Surface_samples& samples,
                  double diagonal, const Detection_options& o)
     : m_surface(surface), m_index(index), m_samples(samples), m_diagonal(diagonal), m_o(o),
-      m_boundary(surface_boundary(surface, 0.002 * diagonal, 100000, 2000))
+      m_boundary(surface_boundary(surface, 0.002 * diagonal, 100000))
   {}
 
   // Candidate planes: principal planes first, then the vote peaks (strongest first).
@@ -246,50 +246,40 @@ public:
       e1 = e1 / e1.length();
       const Vector_3d e2 = SAI::cross(nn, e1);
       double weight_sum = 0;
+      // Adds the residual of the mirror image y of p (s: p's distance to the plane) along the unit
+      // `direction` from `partner`, at `distance` from it, with a robust (Tukey) weight.
+      const auto add = [&](const Vector_3d& p, double s, const Vector_3d& y, const Vector_3d& partner,
+                           double distance, const Vector_3d& direction) {
+        if(!(distance < reach))
+          return 0.0;
+        const double u = distance / reach;
+        const double w = (1 - u * u) * (1 - u * u);
+        // Derivatives of y = p - 2 (n.p - d) n along n + a e1 + b e2 and d + delta.
+        const Vector_3d dya = (nn * SAI::dot(e1, p) + e1 * s) * -2.0;
+        const Vector_3d dyb = (nn * SAI::dot(e2, p) + e2 * s) * -2.0;
+        const Eigen::Vector3d J(SAI::dot(direction, dya), SAI::dot(direction, dyb), 2.0 * SAI::dot(direction, nn));
+        A.noalias() += w * (J * J.transpose());
+        b.noalias() += w * SAI::dot(direction, y - partner) * J;
+        return w;
+      };
       for(std::size_t i = 0; i < n; ++i) {
         const Vector_3d& p = m_samples.points[i];
         const double s = plane.signed_distance(p);
         const Vector_3d y = p - nn * (2 * s);
         const Vector_3d m = reflect_direction(plane, m_samples.normals[i]);
         const Surface_point c = m_index.approximate_closest_compatible(y, m, 0.0, reach, buffer);
-        if(!c.found)
-          continue;
-        const double dist = std::sqrt(c.squared_distance);
-        if(!(dist < reach))
-          continue;
-        const double u = dist / reach;
-        const double w = (1 - u * u) * (1 - u * u);
-        const Vector_3d& nc = m_index.face_normals()[c.face];
-        const double r = SAI::dot(nc, y - c.point);
-        // Derivatives of y = p - 2 (n.p - d) n along n + a e1 + b e2 and d + delta.
-        const Vector_3d dya = (nn * SAI::dot(e1, p) + e1 * s) * -2.0;
-        const Vector_3d dyb = (nn * SAI::dot(e2, p) + e2 * s) * -2.0;
-        const Vector_3d dyd = nn * 2.0;
-        const Eigen::Vector3d J(SAI::dot(nc, dya), SAI::dot(nc, dyb), SAI::dot(nc, dyd));
-        A.noalias() += w * (J * J.transpose());
-        b.noalias() += w * r * J;
-        weight_sum += w;
+        if(c.found) // (to the tangent plane of the closest point)
+          weight_sum += add(p, s, y, c.point, std::sqrt(c.squared_distance), m_index.face_normals()[c.face]);
       }
-      // The border maps onto the border: each border sample's mirror image is drawn to the
-      // border across it (in its face), which pins what the surface leaves free (flat regions).
-      const std::size_t n_border = (std::min)(m_boundary.samples.size(), n / 4);
+      // The border maps onto the border: each border point's mirror image is drawn to the border
+      // across it (in its face), which pins what the surface leaves free (flat regions).
+      const std::size_t n_border = (std::min)(m_boundary.points.size(), n / 4);
       for(std::size_t k = 0; k < n_border; ++k) {
-        const Vector_3d& p = m_boundary.points[m_boundary.samples[(k * m_boundary.samples.size()) / n_border]];
+        const Vector_3d& p = m_boundary.points[(k * m_boundary.points.size()) / n_border];
         const double s = plane.signed_distance(p);
         const Vector_3d y = p - nn * (2 * s);
         const std::uint32_t c = m_boundary.tree.nearest(y);
-        const double dist = (y - m_boundary.points[c]).length();
-        if(!(dist < reach))
-          continue;
-        const double u = dist / reach;
-        const double w = (1 - u * u) * (1 - u * u);
-        const Vector_3d dya = (nn * SAI::dot(e1, p) + e1 * s) * -2.0;
-        const Vector_3d dyb = (nn * SAI::dot(e2, p) + e2 * s) * -2.0;
-        const Vector_3d dyd = nn * 2.0;
-        const Vector_3d& a = m_boundary.across[c];
-        const Eigen::Vector3d J(SAI::dot(a, dya), SAI::dot(a, dyb), SAI::dot(a, dyd));
-        A.noalias() += w * (J * J.transpose());
-        b.noalias() += w * SAI::dot(a, y - m_boundary.points[c]) * J;
+        add(p, s, y, m_boundary.points[c], (y - m_boundary.points[c]).length(), m_boundary.across[c]);
       }
       if(weight_sum < 6)
         break;

@@ -27,17 +27,14 @@ struct Surface_boundary
   std::vector<Vector_3d> points;        // along the border edges
   std::vector<Vector_3d> across;        // per point: the unit direction in its face across the border
   std::vector<Vector_3d> normals;       // per point: the unit normal of its face
-  std::vector<std::uint32_t> samples;   // the points used as samples: evenly spread over `points`
   SAI::Nearest_sample_tree tree;        // over `points`
 
   bool empty() const { return points.empty(); }
 };
 
 // The border edges of `s` (edges of exactly one non-degenerate triangle), sampled every
-// `spacing` at most (coarser when that would exceed `max_points`), and `max_samples` of those
-// points, evenly spread, as samples.
-inline Surface_boundary surface_boundary(const Surface& s, double spacing, std::size_t max_points,
-                                         std::size_t max_samples)
+// `spacing` at most (coarser when that would exceed `max_points`).
+inline Surface_boundary surface_boundary(const Surface& s, double spacing, std::size_t max_points)
 {
   Surface_boundary b;
   struct Half
@@ -91,12 +88,8 @@ inline Surface_boundary surface_boundary(const Surface& s, double spacing, std::
       b.normals.push_back(normal);
     }
   }
-  if(b.points.empty())
-    return b;
-  const std::size_t m = (std::min)(max_samples, b.points.size());
-  for(std::size_t k = 0; k < m; ++k)
-    b.samples.push_back(std::uint32_t((k * b.points.size()) / m));
-  b.tree = SAI::Nearest_sample_tree(b.points);
+  if(!b.points.empty())
+    b.tree = SAI::Nearest_sample_tree(b.points);
   return b;
 }
 
