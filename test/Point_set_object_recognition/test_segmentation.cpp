@@ -646,4 +646,115 @@ TEST(Segmentation, RecognitionOptionsFromNamedParameters)
   EXPECT_EQ(g.tile_size, d.tile_size);
 }
 
+// An engine of its own: the tiles of the plan recognized one by one with recognize_tile(), in
+// reverse order, each on the points it holds, merged by the documented rule, give exactly what
+// recognize_objects() gives.
+TEST(Segmentation, TilesDrivenOneByOneGiveTheWholeRecognition)
+{
+  const Whole_scan& w = whole_scan();
+  const auto np = PSOR::parameters::tile_size(40.0).tile_margin(10.0).number_of_threads(1);
+  const PSOR::Object_recognition_result whole = PSOR::recognize_objects(w.points, np);
+  const PSOR::Tile_plan plan = PSOR::plan_tiles(w.points, np);
+  std::vector<std::size_t> busy = plan.tiles_with_points();
+  ASSERT_EQ(busy.size(), whole.tiles.size());
+  std::vector<PSOR::Tile_recognition> found(plan.number_of_tiles());
+  std::vector<std::vector<std::size_t>> held(plan.number_of_tiles());
+  for(auto t = busy.rbegin(); t != busy.rend(); ++t) {
+    std::vector<Point> points;
+    for(std::size_t i = 0; i < w.points.size(); ++i)
+      if(plan.holds(*t, w.points[i].x(), w.points[i].y()))
+        points.push_back(w.points[i]), held[*t].push_back(i);
+    found[*t] = PSOR::recognize_tile(plan, *t, points, np);
+  }
+  // The merge: locations tile after tile, kinds from the own tile, the nearest location's object.
+  std::vector<std::array<double, 3>> at;
+  std::vector<PSOR::Point_kind> kind(w.points.size(), PSOR::Point_kind::GROUND);
+  std::vector<std::size_t> object(w.points.size(), PSOR::Object_recognition_result::no_object);
+  std::vector<double> distance(w.points.size(), 0);
+  for(std::size_t t : busy) {
+    const PSOR::Tile_recognition& r = found[t];
+    for(std::size_t k = 0; k < r.kind.size(); ++k) {
+      const Point& p = w.points[held[t][k]];
+      if(plan.tile_of(p.x(), p.y()) == t)
+        kind[held[t][k]] = r.kind[k];
+    }
+    for(std::size_t k = 0; k < r.locations.size(); ++k) {
+      at.push_back(r.locations[k].position);
+      for(std::size_t local : r.objects[k].points) {
+        const std::size_t i = held[t][local];
+        const double d = std::hypot(w.points[i].x() - at.back()[0], w.points[i].y() - at.back()[1]);
+        if(object[i] == PSOR::Object_recognition_result::no_object || d < distance[i])
+          object[i] = at.size() - 1, distance[i] = d;
+      }
+    }
+  }
+  for(std::size_t i = 0; i < object.size(); ++i)
+    if(kind[i] == PSOR::Point_kind::GROUND)
+      object[i] = PSOR::Object_recognition_result::no_object;
+  ASSERT_GE(at.size(), 5u);
+  ASSERT_EQ(at.size(), whole.locations.size());
+  for(std::size_t k = 0; k < at.size(); ++k)
+    EXPECT_EQ(at[k], whole.locations[k].position);
+  EXPECT_TRUE(kind == whole.kind);
+  EXPECT_TRUE(object == whole.object_of_point);
+}
+
+// The plan: every point is owned by one tile and held by it; the tiles holding a point are those
+// whose square grown by the margin contains it; a location over an empty square goes to a
+// neighbour that owns points.
+TEST(Segmentation, TilePlanOwnsHoldsAndKeeps)
+{
+  PSOR::Tile_plan plan = PSOR::plan_tiles(CGAL::Bbox_2(0, 0, 99, 49), PSOR::parameters::tile_size(20.0).tile_margin(3.0));
+  ASSERT_EQ(plan.columns, 5u);
+  ASSERT_EQ(plan.rows, 3u);
+  CGAL::Shape_analysis::internal::Random_stream rng(3);
+  for(int k = 0; k < 2000; ++k) {
+    const double x = rng.uniform(-10.0, 110.0), y = rng.uniform(-10.0, 60.0);
+    const std::size_t own = plan.tile_of(x, y);
+    ASSERT_LT(own, plan.number_of_tiles());
+    EXPECT_TRUE(plan.holds(own, x, y));
+    std::vector<std::size_t> listed;
+    plan.for_each_tile_holding(x, y, [&](std::size_t t) { listed.push_back(t); });
+    for(std::size_t t = 0; t < plan.number_of_tiles(); ++t) {
+      const PSOR::Scene_tile s = plan.tile(t);
+      const bool near = x >= s.min[0] - 3 && x <= s.max[0] + 3 && y >= s.min[1] - 3 && y <= s.max[1] + 3;
+      const bool in = std::find(listed.begin(), listed.end(), t) != listed.end();
+      EXPECT_EQ(in, t == own || near) << x << " " << y << " tile " << t;
+      EXPECT_EQ(plan.holds(t, x, y), in);
+    }
+  }
+  plan.add_point(50, 25); // tile 7 (column 2, row 1) alone owns points
+  EXPECT_EQ(plan.number_of_points[7], 1u);
+  EXPECT_EQ(plan.tiles_with_points(), std::vector<std::size_t>{7});
+  EXPECT_EQ(plan.owner_of_location(50, 25), 7u);
+  EXPECT_EQ(plan.owner_of_location(30, 5), 7u);    // tile 1, empty, next to 7
+  EXPECT_EQ(plan.owner_of_location(5, 5), plan.number_of_tiles()); // tile 0: no neighbour owns points
+}
+
+TEST(Segmentation, RecognizeTileBadInput)
+{
+  const Whole_scan& w = whole_scan();
+  const PSOR::Tile_plan plan = PSOR::plan_tiles(w.points, PSOR::parameters::tile_size(40.0));
+  const std::size_t t = plan.tiles_with_points().front();
+  std::vector<Point> held, foreign;
+  for(const Point& p : w.points)
+    (plan.holds(t, p.x(), p.y()) ? held : foreign).push_back(p);
+  ASSERT_FALSE(foreign.empty());
+  std::vector<Point> mixed = held;
+  mixed.push_back(foreign.front());
+  EXPECT_THROW(PSOR::recognize_tile(plan, t, mixed), Bad_input);                   // a point it does not hold
+  EXPECT_THROW(PSOR::recognize_tile(plan, plan.number_of_tiles(), held), Bad_input); // not a tile of the plan
+  EXPECT_THROW(PSOR::recognize_tile(plan, t, std::vector<Point>()), Bad_input);     // owns none
+  PSOR::Tile_plan uncounted = plan;
+  uncounted.number_of_points.clear();
+  EXPECT_THROW(PSOR::recognize_tile(uncounted, t, held), Bad_input);
+  std::vector<Point> nan = held;
+  nan.emplace_back(held.front().x(), held.front().y(), std::nan(""));
+  EXPECT_THROW(PSOR::recognize_tile(plan, t, nan), Bad_input);
+  EXPECT_THROW(PSOR::plan_tiles(CGAL::Bbox_2(0, 0, std::nan(""), 1)), Bad_input);
+  EXPECT_THROW(PSOR::plan_tiles(CGAL::Bbox_2(2, 0, 1, 1)), Bad_input); // empty box
+  EXPECT_THROW(PSOR::plan_tiles(CGAL::Bbox_2(0, 0, 1, 1), PSOR::parameters::tile_size(0.0)), Bad_input);
+  EXPECT_THROW(PSOR::plan_tiles(std::vector<Point>()), Bad_input);
+}
+
 } // namespace
