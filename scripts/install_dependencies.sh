@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libcli11-dev nlohmann-json3-dev
   libsvm-dev                       # Svm_object_classifier
   libosmium2-dev libexpat1-dev zlib1g-dev libgeographiclib-dev  # street maps (OpenStreetMap, UTM)
+  openmpi-bin libopenmpi-dev       # points recognize on the ranks of an MPI job (optional in CMake)
   python3                         # scripts/check_*.py (sizes, package dependencies), run by ctest
   doxygen libjs-mathjax           # the manual, built and checked (0 warnings) by ctest
   "$@"

@@ -110,6 +110,9 @@ public:
 
   // Writes the content produced by `writer` into a temporary file for the declared `path`.
   void stage(const std::string& path, bool binary, const std::function<void(std::ostream&)>& writer);
+  // The same, `writer` given the temporary file's name to write it itself (e.g. from several
+  // processes); the declared `path` must be a regular file or not exist yet.
+  void stage_file(const std::string& path, const std::function<void(const std::string& temporary)>& writer);
   void commit();
 
 private:
@@ -122,6 +125,8 @@ private:
   std::vector<std::pair<std::string, std::string>> m_outputs; // (resolved, as given)
   std::vector<Staged> m_staged;
   bool m_committed = false;
+  // A new temporary file for the declared `path`, staged (`special`: the target is not a regular file).
+  std::string new_temporary(const std::string& path, bool& special);
 };
 
 // Distinct colours for labels 0, 1, 2, ... (golden-angle hues).

@@ -7,6 +7,7 @@
 // calls run_command_line() without running the job.
 
 #include "cli_common.h"
+#include "ranks.h"
 
 #include <CGAL/Shape_analysis/Bad_input.h>
 
@@ -103,8 +104,12 @@ int run_command_line(int argc, char** argv, bool execute)
   add_points_command(app, run);
 
   const std::string unknown = unknown_subcommand(app, argc, argv);
+  // Under mpirun every rank runs the command; one of them (rank 0) says what went wrong.
+  const Ranks& ranks = Ranks::world();
+  const bool speaks = ranks.rank() == 0;
   if(!unknown.empty()) {
-    std::cerr << "shape_analysis: error: " << unknown << " (see shape_analysis --help)" << std::endl;
+    if(speaks)
+      std::cerr << "shape_analysis: error: " << unknown << " (see shape_analysis --help)" << std::endl;
     return 2;
   }
   try {
@@ -116,13 +121,14 @@ int run_command_line(int argc, char** argv, bool execute)
   } catch(const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch(const CLI::ParseError& e) {
-    std::cerr << "shape_analysis: error: " << one_line(e.what())
-              << " (see shape_analysis --help)" << std::endl;
+    if(speaks)
+      std::cerr << "shape_analysis: error: " << one_line(e.what()) << " (see shape_analysis --help)" << std::endl;
     return 2;
   }
   const std::string bad_value = bad_option_value(app);
   if(!bad_value.empty()) {
-    std::cerr << "shape_analysis: error: " << bad_value << std::endl;
+    if(speaks)
+      std::cerr << "shape_analysis: error: " << bad_value << std::endl;
     return 2;
   }
 
@@ -130,21 +136,28 @@ int run_command_line(int argc, char** argv, bool execute)
     return run ? 0 : 2;
   const std::string command = app.get_subcommands().empty() ? std::string("shape_analysis")
                                                             : app.get_subcommands().front()->get_name();
+  const auto fail = [&](const std::string& what, int status) {
+    if(speaks)
+      std::cerr << "shape_analysis " << command << ": error: " << one_line(what) << std::endl;
+    return status;
+  };
+  const CLI::App* points = app.get_subcommands().empty() ? nullptr : app.get_subcommands().front();
+  if(ranks.size() > 1 && !(command == "points" && !points->get_subcommands().empty() &&
+                           points->get_subcommands().front()->get_name() == "recognize"))
+    return fail("only 'points recognize --work-dir' runs on several MPI ranks", 2);
   try {
     return run ? run() : 2;
   } catch(const CGAL::Shape_analysis::Bad_input& e) {
-    std::cerr << "shape_analysis " << command << ": error: " << one_line(e.what()) << std::endl;
+    return fail(e.what(), 1);
   } catch(const Usage_error& e) {
-    std::cerr << "shape_analysis " << command << ": error: " << one_line(e.what()) << std::endl;
-    return 2;
+    return fail(e.what(), 2);
   } catch(const Cli_error& e) {
-    std::cerr << "shape_analysis " << command << ": error: " << one_line(e.what()) << std::endl;
+    return fail(e.what(), 1);
   } catch(const std::bad_alloc&) {
-    std::cerr << "shape_analysis " << command << ": error: out of memory" << std::endl;
+    return fail("out of memory", 1);
   } catch(const std::exception& e) {
-    std::cerr << "shape_analysis " << command << ": error: " << one_line(e.what()) << std::endl;
+    return fail(e.what(), 1);
   }
-  return 1;
 }
 
 } // namespace shape_analysis_cli

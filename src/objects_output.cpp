@@ -108,11 +108,11 @@ Point_set objects_point_set(const std::string& input, const Point_set& points, c
   return result;
 }
 
-// Writes `result` (objects_point_set()) as LAS 1.4 (write_las_point_set()):
+// Makes `result` (objects_point_set()) the points of a LAS 1.4 file of write_las_point_set():
 // the classification 2 for the ground, 64 + the class for the points of a classified object (with
-// `class_names` in the Classification Lookup record), 1 for the others; an input classification
-// kept as 'input_classification'; 8-bit colours widened to 16 bits.
-void write_objects_las(std::ostream& out, Point_set& result, const std::vector<std::string>& class_names)
+// `class_names` in the Classification Lookup record, returned as (code, name)), 1 for the others;
+// an input classification kept as 'input_classification'; 8-bit colours widened to 16 bits.
+std::vector<std::pair<unsigned, std::string>> make_objects_las(Point_set& result, const std::vector<std::string>& class_names)
 {
   move_property_to(result, "classification", "input_classification");
   for(const char* c : {"red", "green", "blue"})
@@ -140,6 +140,13 @@ void write_objects_las(std::ostream& out, Point_set& result, const std::vector<s
   std::vector<std::pair<unsigned, std::string>> names;
   for(std::size_t c = 0; named && c < class_names.size(); ++c)
     names.emplace_back(unsigned(first_class_code + c), class_names[c]);
+  return names;
+}
+
+// Writes `result` (objects_point_set()) as LAS 1.4 (make_objects_las(), write_las_point_set()).
+void write_objects_las(std::ostream& out, Point_set& result, const std::vector<std::string>& class_names)
+{
+  const auto names = make_objects_las(result, class_names);
   try {
     PSOR::write_las_point_set(out, result, PSOR::parameters::class_names(names));
   } catch(const CGAL::Shape_analysis::Bad_input& e) {
@@ -149,6 +156,30 @@ void write_objects_las(std::ostream& out, Point_set& result, const std::vector<s
 
 } // namespace
 
+void write_objects_file(std::ostream& out, bool las, const std::string& input, const Point_set& points,
+                        const std::vector<int>& object, const std::vector<char>& ground, const std::string& command,
+                        const std::vector<int>& label, const std::string& comment,
+                        const std::vector<std::string>& class_names)
+{
+  Point_set result = objects_point_set(input, points, object, ground, label, las ? 2 : 1);
+  if(las)
+    return write_objects_las(out, result, class_names);
+  CGAL::IO::set_mode(out, CGAL::IO::BINARY);
+  if(!CGAL::IO::write_PLY(out, result, "written by shape_analysis " + command + " (CGAL Global Shape Analysis)" +
+                                          (comment.empty() ? std::string() : "\n" + comment)))
+    throw Cli_error("cannot write the segmented points");
+}
+
+Point_set objects_las_points(const std::string& input, const Point_set& points, const std::vector<int>& object,
+                             const std::vector<char>& ground, const std::vector<int>& label,
+                             const std::vector<std::string>& class_names,
+                             std::vector<std::pair<unsigned, std::string>>& names)
+{
+  Point_set result = objects_point_set(input, points, object, ground, label, 2);
+  names = make_objects_las(result, class_names);
+  return result;
+}
+
 void stage_objects_file(Output_files& outputs, const std::string& path, const std::string& input,
                         const Point_set& points, const std::vector<int>& object, const std::vector<char>& ground,
                         const std::string& command, const std::vector<int>& label, const std::string& comment,
@@ -156,13 +187,7 @@ void stage_objects_file(Output_files& outputs, const std::string& path, const st
 {
   const bool las = lower_extension(path) == ".las";
   outputs.stage(path, true, [&](std::ostream& out) {
-    Point_set result = objects_point_set(input, points, object, ground, label, las ? 2 : 1);
-    if(las)
-      return write_objects_las(out, result, class_names);
-    CGAL::IO::set_mode(out, CGAL::IO::BINARY);
-    if(!CGAL::IO::write_PLY(out, result, "written by shape_analysis " + command + " (CGAL Global Shape Analysis)" +
-                                            (comment.empty() ? std::string() : "\n" + comment)))
-      throw Cli_error("cannot write " + path);
+    write_objects_file(out, las, input, points, object, ground, command, label, comment, class_names);
   });
 }
 

@@ -375,12 +375,11 @@ void Output_files::add_output(const std::string& path, const std::string& what,
   m_outputs.emplace_back(target, path);
 }
 
-void Output_files::stage(const std::string& path, bool binary,
-                         const std::function<void(std::ostream&)>& writer)
+std::string Output_files::new_temporary(const std::string& path, bool& special)
 {
   std::string target = resolved(path);
   std::error_code ec;
-  const bool special = fs::exists(target, ec) && !fs::is_regular_file(target, ec);
+  special = fs::exists(target, ec) && !fs::is_regular_file(target, ec);
   // The temporary file: beside the target (same file system, so that rename() is atomic), named
   // after this process (so that a later run can tell it is left over), or in the temporary
   // directory for a special file.
@@ -399,6 +398,14 @@ void Output_files::stage(const std::string& path, bool binary,
   const std::string temporary(name.data());
   track_temporary(temporary);
   m_staged.push_back(Staged{temporary, target, path, special});
+  return temporary;
+}
+
+void Output_files::stage(const std::string& path, bool binary,
+                         const std::function<void(std::ostream&)>& writer)
+{
+  bool special = false;
+  const std::string temporary = new_temporary(path, special);
   std::ofstream out(temporary, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
   if(!out)
     throw Cli_error("cannot write '" + path + "'");
@@ -406,6 +413,15 @@ void Output_files::stage(const std::string& path, bool binary,
   out.flush();
   if(!out)
     throw Cli_error("error while writing '" + path + "' (disk full?)");
+}
+
+void Output_files::stage_file(const std::string& path, const std::function<void(const std::string&)>& writer)
+{
+  bool special = false;
+  const std::string temporary = new_temporary(path, special);
+  if(special)
+    throw Cli_error("'" + path + "' is not a regular file: it cannot be written by several processes");
+  writer(temporary);
 }
 
 void Output_files::commit()

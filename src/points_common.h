@@ -75,9 +75,26 @@ void stage_objects_file(Output_files& outputs, const std::string& path, const st
                         const std::vector<char>& ground, const std::string& command,
                         const std::vector<int>& label = {}, const std::string& comment = "",
                         const std::vector<std::string>& class_names = {});
+// The points that stage_objects_file() writes as LAS (write_las_point_set() of them with
+// `names`, the class names of the Classification Lookup record).
+CGAL::Point_set_3<Point_3> objects_las_points(const std::string& input, const CGAL::Point_set_3<Point_3>& points,
+                                              const std::vector<int>& object, const std::vector<char>& ground,
+                                              const std::vector<int>& label, const std::vector<std::string>& class_names,
+                                              std::vector<std::pair<unsigned, std::string>>& names);
 
-// Registers `points recognize` and `points train` (points_recognize_command.cpp).
+// What stage_objects_file() writes, into `out` (LAS when `las`, else PLY).
+void write_objects_file(std::ostream& out, bool las, const std::string& input, const CGAL::Point_set_3<Point_3>& points,
+                        const std::vector<int>& object, const std::vector<char>& ground, const std::string& command,
+                        const std::vector<int>& label = {}, const std::string& comment = "",
+                        const std::vector<std::string>& class_names = {});
+
+// The horizontal box of a scan: xmin, ymin, xmax, ymax (points_train_command.cpp).
+std::array<double, 4> horizontal_bbox(const CGAL::Point_set_3<Point_3>& points);
+
+// Registers `points recognize` (points_recognize_command.cpp) and, through the next, `points train`.
 void add_points_recognize_commands(CLI::App* points, std::function<int()>& run);
+// Registers `points train` (points_train_command.cpp).
+void add_points_train_command(CLI::App* points, std::function<int()>& run);
 
 // Prints and returns (JSON) the recognition precision and recall per class of the labelled
 // locations of `locations_path` against the labelled objects of `labels_path` (a match within

@@ -5,5 +5,13 @@
 // Exit codes: 0 success, 1 the job failed (bad input, unreadable file...), 2 bad command line.
 
 #include "cli_common.h"
+#include "ranks.h"
 
-int main(int argc, char** argv) { return shape_analysis_cli::run_command_line(argc, argv, true); }
+int main(int argc, char** argv)
+{
+  // Under mpirun, the ranks of the job (MPI_Init); `points recognize --work-dir` shares its work.
+  shape_analysis_cli::Ranks::initialize(argc, argv);
+  const int status = shape_analysis_cli::run_command_line(argc, argv, true);
+  shape_analysis_cli::Ranks::finalize();
+  return status;
+}

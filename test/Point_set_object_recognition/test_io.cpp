@@ -12,6 +12,8 @@
 #include <CGAL/Point_set_object_recognition/internal/Las_writer.h>
 #include <CGAL/Point_set_object_recognition/write_point_set.h>
 #include <CGAL/Point_set_object_recognition/read_point_set.h>
+#include <CGAL/Point_set_object_recognition/Point_set_file_reader.h>
+#include <CGAL/Point_set_3/IO/PLY.h>
 
 #include <gtest/gtest.h>
 
@@ -726,6 +728,170 @@ TEST_F(Io, WriterRefusesWhatItCannotStore)
 
 // ---------------------------------------------------------------------------------------------
 // CGAL's demo point files (extracted by the build into SHAPE_ANALYSIS_DATA_DIR when listed there)
+
+// The bytes of `ps` as a binary PLY (every property, in the point set's order).
+std::string ply_bytes(const Point_set& ps)
+{
+  std::ostringstream out;
+  CGAL::IO::set_mode(out, CGAL::IO::BINARY);
+  CGAL::IO::write_PLY(out, ps);
+  return out.str();
+}
+
+// Point_set_file_reader gives, piece by piece (pieces of `piece` points, read in reverse order),
+// exactly the points and properties that read_point_set() gives with the same origin.
+void expect_pieces_equal_whole(const std::string& file, std::size_t piece)
+{
+  Point_set whole, all, part;
+  const auto r = PR::read_point_set(file, whole);
+  const PR::Point_set_file_reader reader(file);
+  ASSERT_EQ(reader.number_of_points(), whole.size()) << file;
+  EXPECT_EQ(reader.format(), r.format);
+  std::vector<Point_set> pieces;
+  for(std::uint64_t first = 0; first < reader.number_of_points(); first += piece)
+    pieces.emplace_back();
+  for(std::size_t k = pieces.size(); k-- > 0;) {
+    const std::uint64_t first = k * piece;
+    reader.read(first, std::size_t(std::min<std::uint64_t>(piece, reader.number_of_points() - first)), pieces[k], r.offset);
+  }
+  for(std::size_t k = 0; k < pieces.size(); ++k)
+    if(k == 0)
+      all = pieces[0];
+    else
+      all.join(pieces[k]);
+  EXPECT_EQ(all.properties(), whole.properties()) << file;
+  EXPECT_TRUE(ply_bytes(all) == ply_bytes(whole)) << file;
+  // The coordinates alone, as stored.
+  std::vector<double> xyz;
+  reader.read_coordinates(1, 2, xyz);
+  ASSERT_EQ(xyz.size(), 6u);
+  const Point& second = whole.point(*(whole.begin() + 1));
+  EXPECT_EQ(xyz[0] - r.offset[0], second.x());
+  EXPECT_EQ(xyz[2] - r.offset[2], second.z());
+  EXPECT_EQ(PR::Point_set_file_reader::automatic_local_origin({{xyz[0], xyz[1], xyz[2]}}, {{xyz[3], xyz[4], xyz[5]}})[0] != 0,
+            r.offset[0] != 0);
+}
+
+TEST_F(Io, FileReaderPiecesAreReadPointSet)
+{
+  // LAS 1.2 and 1.4 (formats 1, 3, 6, 7) with UTM coordinates, extra bytes and class names.
+  std::vector<std::array<double, 3>> world;
+  for(unsigned format : {1u, 3u, 6u, 7u}) {
+    Point_set utm = utm_cloud(1000, format >= 6, world);
+    auto extra = utm.add_property_map<int>("instance", 0).first;
+    auto value = utm.add_property_map<float>("score", 0).first;
+    std::size_t k = 0;
+    for(Point_set::Index i : utm)
+      extra[i] = int(k) - 500, value[i] = float(k++) / 7.f;
+    const std::string file = path("f" + std::to_string(format) + ".las");
+    PRI::write_las(file, utm, {{0.001, 0.001, 0.001}}, {{500000, 4200000, 0}}, format);
+    expect_pieces_equal_whole(file, 333);
+  }
+  // Binary PLY with float coordinates, normals and properties of every type.
+  Point_set ply;
+  ply.add_normal_map();
+  auto c = ply.add_property_map<signed char>("c", 0).first;
+  auto uc = ply.add_property_map<unsigned char>("red", 0).first;
+  auto sh = ply.add_property_map<short>("s", 0).first;
+  auto us = ply.add_property_map<unsigned short>("us", 0).first;
+  auto ui = ply.add_property_map<unsigned int>("ui", 0).first;
+  auto d = ply.add_property_map<double>("d", 0).first;
+  for(int j = 0; j < 500; ++j) {
+    const auto i = *ply.insert(Point(0.25 * j, -0.5 * j, 1.0 / (j + 1)), Kernel::Vector_3(0, 0.6, 0.8));
+    c[i] = static_cast<signed char>(j % 200 - 100), uc[i] = static_cast<unsigned char>(j % 256);
+    sh[i] = static_cast<short>(-j), us[i] = static_cast<unsigned short>(3 * j), ui[i] = 7u * unsigned(j);
+    d[i] = std::sqrt(double(j));
+  }
+  {
+    std::ofstream out(path("p.ply"), std::ios::binary);
+    CGAL::IO::set_mode(out, CGAL::IO::BINARY);
+    CGAL::IO::write_PLY(out, ply);
+  }
+  expect_pieces_equal_whole(path("p.ply"), 64);
+  // KITTI.
+  PRI::write_kitti(path("k.bin"), utm_cloud(1000, false, world), {{0, 0, 0}});
+  expect_pieces_equal_whole(path("k.bin"), 100);
+  // CGAL's airborne tile (double coordinates, colours, labels) when the build extracted it.
+  const std::string b9 = std::string(SHAPE_ANALYSIS_DATA_DIR) + "/b9_training.ply";
+  if(std::filesystem::exists(b9))
+    expect_pieces_equal_whole(b9, 4096);
+}
+
+TEST_F(Io, FileReaderRefusesWhatItCannotReadInPieces)
+{
+  std::ofstream(path("a.xyz")) << "1 2 3\n4 5 6\n";
+  expect_bad_input([&] { PR::Point_set_file_reader r(path("a.xyz")); }, "LAS, binary PLY or KITTI");
+  EXPECT_FALSE(PR::Point_set_file_reader::readable(path("a.xyz")));
+  std::ofstream(path("ascii.ply")) << "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                                      "property float z\nend_header\n1 2 3\n";
+  expect_bad_input([&] { PR::Point_set_file_reader r(path("ascii.ply")); }, "binary_little_endian");
+  std::ofstream(path("list.ply"), std::ios::binary)
+    << "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+       "property float z\nproperty list uchar int i\nend_header\n";
+  expect_bad_input([&] { PR::Point_set_file_reader r(path("list.ply")); }, "list");
+  std::ofstream(path("short.ply"), std::ios::binary)
+    << "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+       "property float z\nend_header\n0123456789ab0123456789ab";
+  expect_bad_input([&] { PR::Point_set_file_reader r(path("short.ply")); }, "3 vertices");
+  std::ofstream(path("odd.bin"), std::ios::binary) << "0123456789abcdefXYZ";
+  expect_bad_input([&] { PR::Point_set_file_reader r(path("odd.bin")); }, "multiple of 16");
+  std::ofstream(path("empty.las"));
+  expect_bad_input([&] { PR::Point_set_file_reader r(path("empty.las")); }, "LAS");
+  expect_bad_input([&] { PR::Point_set_file_reader r(path("missing.las")); }, "missing.las");
+  // A range beyond the points.
+  std::vector<std::array<double, 3>> world;
+  PRI::write_kitti(path("k.bin"), utm_cloud(10, false, world), {{0, 0, 0}});
+  const PR::Point_set_file_reader reader(path("k.bin"));
+  std::vector<double> xyz;
+  expect_bad_input([&] { reader.read_coordinates(8, 3, xyz); }, "beyond");
+  Point_set ps;
+  expect_bad_input([&] { reader.read(11, 0, ps); }, "beyond");
+  reader.read(10, 0, ps);
+  EXPECT_TRUE(ps.empty());
+}
+
+// A LAS file written in pieces (the pieces' records in reverse order at their places, the header
+// of their merged summaries) is the file write_las_point_set() writes from the whole.
+TEST_F(Io, LasWrittenInPiecesIsTheWholeFile)
+{
+  std::vector<std::array<double, 3>> world;
+  Point_set whole = utm_cloud(1000, true, world);
+  auto instance = whole.add_property_map<int>("instance", 0).first;
+  std::size_t k = 0;
+  for(Point_set::Index i : whole)
+    instance[i] = int(k++ % 17) - 3;
+  const std::vector<std::pair<unsigned, std::string>> names = {{64, "pole"}, {65, "car"}};
+  std::ostringstream expected;
+  PR::write_las_point_set(expected, whole, PR::parameters::class_names(names).local_origin(std::array<double, 3>{{10, 20, 0}}));
+  std::array<double, 3> lowest{{1e300, 1e300, 1e300}};
+  for(Point_set::Index i : whole)
+    for(int c = 0; c < 3; ++c)
+      lowest[std::size_t(c)] = std::min(lowest[std::size_t(c)], whole.point(i)[c]);
+  const PR::Las_point_set_pieces<Point> pieces(whole, lowest,
+                                               PR::parameters::class_names(names).local_origin(std::array<double, 3>{{10, 20, 0}}));
+  const std::size_t header = pieces.header({}).size(), piece = 300;
+  std::string file(header + whole.size() * pieces.record_length(), '\0');
+  PR::Las_point_set_pieces<Point>::Summary all;
+  for(std::size_t first : {900, 600, 300, 0}) { // the pieces in reverse order
+    Point_set part = whole;
+    part.remove(part.begin(), part.end()); // the properties kept
+    part.collect_garbage();
+    for(std::size_t j = first; j < std::min(first + piece, whole.size()); ++j)
+      part.insert(whole, *(whole.begin() + std::ptrdiff_t(j)));
+    std::vector<unsigned char> records;
+    all.merge(pieces.records(part, records));
+    ASSERT_EQ(records.size(), part.size() * pieces.record_length());
+    std::copy(records.begin(), records.end(), file.begin() + std::ptrdiff_t(header + first * pieces.record_length()));
+  }
+  const std::vector<unsigned char> h = pieces.header(all);
+  std::copy(h.begin(), h.end(), file.begin());
+  EXPECT_EQ(all.number_of_points, whole.size());
+  EXPECT_TRUE(file == expected.str());
+  // A piece with other properties than the layout's is refused.
+  Point_set other = utm_cloud(3, true, world);
+  std::vector<unsigned char> records;
+  expect_bad_input([&] { pieces.records(other, records); }, "other properties");
+}
 
 TEST(DemoData, CgalPointFilesAreRead)
 {

@@ -27,48 +27,14 @@
 #include <unistd.h>
 #include <vector>
 
-extern char** environ;
+#include "tool_process.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using namespace tool_process;
 
-const std::string tool = SHAPE_ANALYSIS_TOOL;
 const std::string mesh = std::string(SHAPE_ANALYSIS_DATA_DIR) + "/elephant.off";
-
-std::string read_file(const fs::path& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-// Starts the tool with `args` (its standard output discarded), SHAPE_ANALYSIS_COMMIT_STEP_DELAY
-// set to `delay` microseconds: the pause after each step of a commit.
-pid_t start_tool(std::vector<std::string> args, long delay)
-{
-  args.insert(args.begin(), tool);
-  std::vector<char*> argv;
-  for(std::string& a : args)
-    argv.push_back(a.data());
-  argv.push_back(nullptr);
-  std::vector<std::string> env_strings;
-  for(char** e = environ; *e; ++e)
-    if(std::string(*e).rfind("SHAPE_ANALYSIS_COMMIT_STEP_DELAY=", 0) != 0)
-      env_strings.emplace_back(*e);
-  env_strings.push_back("SHAPE_ANALYSIS_COMMIT_STEP_DELAY=" + std::to_string(delay));
-  std::vector<char*> envp;
-  for(std::string& e : env_strings)
-    envp.push_back(e.data());
-  envp.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  pid_t pid = -1;
-  if(::posix_spawn(&pid, tool.c_str(), &actions, nullptr, argv.data(), envp.data()) != 0)
-    pid = -1;
-  posix_spawn_file_actions_destroy(&actions);
-  return pid;
-}
 
 // `segment` with k segments writing out.ply, out.seg and out.json in `dir`.
 pid_t start_segment(const fs::path& dir, int k, long delay)
@@ -76,13 +42,6 @@ pid_t start_segment(const fs::path& dir, int k, long delay)
   return start_tool({"segment", mesh, "-k", std::to_string(k), "-q", "-o", (dir / "out.ply").string(),
                      "--seg", (dir / "out.seg").string(), "--report", (dir / "out.json").string()},
                     delay);
-}
-
-int wait_for(pid_t pid)
-{
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return status;
 }
 
 // The three outputs of one run.

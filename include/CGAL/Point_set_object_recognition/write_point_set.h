@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -182,6 +183,128 @@ void write_las_point_set(const std::string& filename, const CGAL::Point_set_3<Po
   internal::write_las(filename, points, {{0.001, 0.001, 0.001}}, offset, internal::las_point_format(points),
                       o.local_origin, o.class_names);
 }
+
+/*!
+\ingroup PkgPointSetObjectRecognitionRef
+
+A LAS 1.4 file written a piece at a time, as `write_las_point_set()` writes the union of the
+pieces, so that a scan larger than memory can be written (and by several processes, each with the
+records of its own pieces at their places in the file). The pieces are point sets with the same
+properties; the file's offset is that of the whole (its smallest coordinate rounded down to a
+multiple of 100 m, local origin added), given at construction. Write the header (`header()`, of
+the `Summary` of every piece, merged) at the start of the file and the records of the pieces
+(`records()`) after it, in order: record `i` of the file at byte `header().size() + i *
+record_length()`.
+
+\tparam Point the point type of the point sets
+*/
+template <typename Point>
+class Las_point_set_pieces
+{
+public:
+  /// What the header needs from the records written: their number, counts by return number,
+  /// and the box of the coordinates as stored.
+  struct Summary
+  {
+    std::uint64_t number_of_points = 0;            ///< the records
+    std::array<std::uint64_t, 15> by_return{};      ///< per return number 1 to 15, the records
+    std::array<double, 3> min{{0, 0, 0}};          ///< the smallest stored coordinates
+    std::array<double, 3> max{{0, 0, 0}};          ///< the largest stored coordinates
+
+    /// Adds the records of `other` to these (from another process, say).
+    /// \param other what other records need
+    void merge(const Summary& other)
+    {
+      for(int c = 0; c < 3; ++c) {
+        min[c] = number_of_points == 0 ? other.min[c] : (other.number_of_points == 0 ? min[c] : (std::min)(min[c], other.min[c]));
+        max[c] = number_of_points == 0 ? other.max[c] : (other.number_of_points == 0 ? max[c] : (std::max)(max[c], other.max[c]));
+      }
+      number_of_points += other.number_of_points;
+      for(int r = 0; r < 15; ++r)
+        by_return[r] += other.by_return[r];
+    }
+  };
+
+  /// \param layout a point set with the properties of the pieces (its points are not written)
+  /// \param lowest the smallest coordinates of all the pieces' points (each axis), to choose the
+  ///        file's offset as `write_las_point_set()` does
+  /// \param np an optional sequence of named parameters among `local_origin` and `class_names`,
+  ///        as for `write_las_point_set()`
+  /// \throws CGAL::Shape_analysis::Bad_input if `lowest`, the local origin or a class code is
+  ///         not valid (as `write_las_point_set()`)
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  Las_point_set_pieces(const CGAL::Point_set_3<Point>& layout, const std::array<double, 3>& lowest,
+                       const NamedParameters& np = parameters::default_values())
+    : m_layout(layout)
+  {
+    CGAL::Point_set_3<Point> one = layout;
+    one.clear();
+    one.insert(Point(lowest[0], lowest[1], lowest[2]));
+    m_options = internal::checked_las_options(one, np, m_offset);
+    m_format = internal::las_point_format(layout);
+    const internal::Las_attributes<CGAL::Point_set_3<Point>> attributes(layout);
+    m_record = internal::las_layout(m_format).size;
+    for(const auto& e : attributes.extras)
+      m_record += internal::las_extra_size(e.data_type);
+    internal::Le_buffer vlrs;
+    m_vlrs_count = internal::las_vlrs(vlrs, attributes.extras, m_options.class_names, "write_las_point_set: ");
+    m_vlrs = std::move(vlrs.bytes);
+  }
+
+  /// \returns the size of a point record in bytes
+  std::size_t record_length() const { return m_record; }
+
+  /// Appends the records of `piece` to `bytes` and returns what the header needs of them.
+  /// \param piece points with the properties of the layout
+  /// \param bytes the records, appended
+  /// \returns their summary
+  /// \throws CGAL::Shape_analysis::Bad_input as `write_las_point_set()` (a point too far from
+  ///         the offset, a return number too large)
+  Summary records(const CGAL::Point_set_3<Point>& piece, std::vector<unsigned char>& bytes) const
+  {
+    Summary s;
+    const internal::Las_attributes<CGAL::Point_set_3<Point>> attributes(piece);
+    if(attributes.extras.size() != internal::Las_attributes<CGAL::Point_set_3<Point>>(m_layout).extras.size())
+      throw Bad_input("write_las_point_set: a piece has other properties than the layout");
+    std::vector<std::int32_t> q;
+    std::uint64_t by_return[15] = {0};
+    internal::las_integer_coordinates(piece, attributes, {{0.001, 0.001, 0.001}}, m_offset, m_options.local_origin,
+                                      m_format, "write_las_point_set: ", q, s.min, s.max, by_return);
+    s.number_of_points = piece.size();
+    for(int r = 0; r < 15; ++r)
+      s.by_return[std::size_t(r)] = by_return[r];
+    internal::Le_buffer b;
+    b.bytes.swap(bytes);
+    std::size_t k = 0;
+    for(typename CGAL::Point_set_3<Point>::Index i : piece)
+      internal::append_las_record(b, attributes, i, q.data() + 3 * (k++), m_format);
+    b.bytes.swap(bytes);
+    return s;
+  }
+
+  /// \param all the summary of every record of the file (merged)
+  /// \returns the header block and the variable length records, which start the file
+  std::vector<unsigned char> header(const Summary& all) const
+  {
+    std::uint64_t by_return[15];
+    for(int r = 0; r < 15; ++r)
+      by_return[r] = all.by_return[std::size_t(r)];
+    internal::Le_buffer b;
+    internal::las_header_block(b, m_format, std::size_t(all.number_of_points), by_return, {{0.001, 0.001, 0.001}},
+                               m_offset, all.min, all.max, m_record, {m_vlrs_count, m_vlrs.size()});
+    b.bytes.insert(b.bytes.end(), m_vlrs.begin(), m_vlrs.end());
+    return b.bytes;
+  }
+
+private:
+  CGAL::Point_set_3<Point> m_layout;
+  Write_las_point_set_options m_options;
+  std::array<double, 3> m_offset{{0, 0, 0}};
+  unsigned m_format = 6;
+  std::size_t m_record = 0;
+  std::uint32_t m_vlrs_count = 0;
+  std::vector<unsigned char> m_vlrs;
+};
 
 } // namespace Point_set_object_recognition
 } // namespace CGAL

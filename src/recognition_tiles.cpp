@@ -1,0 +1,679 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// `points recognize --work-dir`: the recognition of a scan larger than memory (recognition_tiles.h).
+//
+// The work folder holds `plan` (what was planned: the scan, the options, the tiles' counts;
+// written once every tile's points are in `points/`), `points/<tile>` (the points a tile holds:
+// index, x, y, z as 64-bit numbers, in the scan's order) and `tiles/<tile>` (a finished tile's
+// result). Files are written under a temporary name and renamed, so a file present is whole.
+
+#include "recognition_tiles.h"
+#include "ranks.h"
+
+#include <CGAL/Point_set_3/IO/PLY.h>
+#include <CGAL/Point_set_object_recognition/write_point_set.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <unordered_map>
+
+namespace shape_analysis_cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+const char* const plan_magic = "shape_analysis tile plan 1";
+const char tile_magic[8] = {'S', 'A', 'T', 'I', 'L', 'E', '1', 0};
+
+// Native binary records of the work folder (read back by the same program on the same machine).
+struct Record_writer
+{
+  std::string bytes;
+  template <typename T> void put(const T& v) { bytes.append(reinterpret_cast<const char*>(&v), sizeof(T)); }
+};
+
+struct Record_reader
+{
+  const std::string& bytes;
+  std::size_t at = 0;
+  template <typename T> T get()
+  {
+    T v;
+    if(at + sizeof(T) > bytes.size())
+      throw Cli_error("a tile file of the work folder is truncated (remove the folder and run again)");
+    std::memcpy(&v, bytes.data() + at, sizeof(T));
+    at += sizeof(T);
+    return v;
+  }
+};
+
+std::string read_file(const fs::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if(!in)
+    throw Cli_error("cannot read " + path.string());
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Writes `bytes` to `path` through a temporary file renamed into place.
+void write_whole_file(const fs::path& path, const std::string& bytes)
+{
+  const fs::path temporary = path.string() + ".part";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if(!out.write(bytes.data(), std::streamsize(bytes.size())) || !out.flush())
+      throw Cli_error("cannot write " + temporary.string() + " (disk full?)");
+  }
+  std::error_code ec;
+  fs::rename(temporary, path, ec);
+  if(ec)
+    throw Cli_error("cannot rename " + temporary.string() + ": " + ec.message());
+}
+
+// What decides the plan and the tiles' results: the scan (path, size, time), the options.
+std::string plan_key(const PSOR::Point_set_file_reader& reader, const PSOR::Recognize_objects_options& o,
+                     const std::string& identity)
+{
+  std::ostringstream k;
+  k.precision(17);
+  const fs::path scan = fs::absolute(reader.filename());
+  k << plan_magic << "\nscan " << scan.string() << ' ' << fs::file_size(scan) << ' '
+    << fs::last_write_time(scan).time_since_epoch().count() << ' ' << reader.number_of_points() << "\ntiles "
+    << o.tile_size << ' ' << o.tile_margin;
+  if(o.tile_origin)
+    k << ' ' << (*o.tile_origin)[0] << ' ' << (*o.tile_origin)[1];
+  k << "\nrecognition " << identity << '\n';
+  return k.str();
+}
+
+// Runs `f` (no collective call inside) on every rank, then throws on every rank the error of the
+// lowest rank that failed, if any.
+template <typename F>
+void together(const Ranks& ranks, const F& f)
+{
+  std::string error;
+  try {
+    f();
+  } catch(const std::exception& e) {
+    error = e.what();
+  }
+  error = ranks.first_error(error);
+  if(!error.empty())
+    throw Cli_error(error);
+}
+
+// Calls f(first, xyz) for the pieces of the points [begin, end) of the scan, in order.
+template <typename F>
+void for_each_piece(const PSOR::Point_set_file_reader& reader, std::uint64_t begin, std::uint64_t end, const F& f)
+{
+  const std::size_t piece = std::size_t(1) << 20;
+  std::vector<double> xyz;
+  for(std::uint64_t first = begin; first < end; first += piece) {
+    reader.read_coordinates(first, std::size_t(std::min<std::uint64_t>(piece, end - first)), xyz);
+    f(first, xyz);
+  }
+}
+
+// The plan of the scan and each tile's points in `points/<tile>.<rank>`, from two passes of every
+// rank over its part of the scan.
+PSOR::Tile_plan index_scan(const PSOR::Point_set_file_reader& reader, const fs::path& dir,
+                           const PSOR::Recognize_objects_options& o, std::uint64_t begin, std::uint64_t end,
+                           std::array<double, 3>& lowest, Progress& progress)
+{
+  const Ranks& ranks = Ranks::world();
+  progress.stage("indexing " + reader.filename() + ": its box");
+  std::vector<double> lo(3, 1e300), hi(3, -1e300);
+  together(ranks, [&]() {
+    for_each_piece(reader, begin, end, [&](std::uint64_t first, const std::vector<double>& xyz) {
+      for(std::size_t k = 0; k < xyz.size(); k += 3) {
+        if(!std::isfinite(xyz[k]) || !std::isfinite(xyz[k + 1]) || !std::isfinite(xyz[k + 2]))
+          throw Cli_error(reader.filename() + ": point " + std::to_string(first + k / 3) +
+                          " has a coordinate that is not finite");
+        for(int c = 0; c < 3; ++c)
+          lo[c] = std::min(lo[c], xyz[k + c]), hi[c] = std::max(hi[c], xyz[k + c]);
+      }
+    });
+  });
+  ranks.min_max(lo, hi);
+  lowest = {{lo[0], lo[1], lo[2]}};
+  PSOR::Tile_plan plan;
+  together(ranks, [&]() {
+    const auto np = PSOR::parameters::tile_size(o.tile_size).tile_margin(o.tile_margin);
+    const CGAL::Bbox_2 box(lo[0], lo[1], hi[0], hi[1]);
+    plan = o.tile_origin ? PSOR::plan_tiles(box, np.tile_origin(*o.tile_origin)) : PSOR::plan_tiles(box, np);
+    if(ranks.rank() == 0) {
+      fs::remove_all(dir / "points");
+      fs::create_directories(dir / "points");
+    }
+  });
+
+  progress.stage("indexing " + reader.filename() + ": the points of each tile");
+  const std::string part = "." + std::to_string(ranks.rank());
+  together(ranks, [&]() {
+    // Per tile, its records waiting to be appended to its file (flushed when they pass a budget).
+    std::unordered_map<std::size_t, std::string> waiting;
+    std::size_t waiting_bytes = 0;
+    const auto flush = [&]() {
+      for(auto& w : waiting) {
+        const fs::path file = dir / "points" / (std::to_string(w.first) + part);
+        std::ofstream out(file, std::ios::binary | std::ios::app);
+        if(!out.write(w.second.data(), std::streamsize(w.second.size())) || !out.flush())
+          throw Cli_error("cannot write " + file.string() + " (disk full?)");
+      }
+      waiting.clear();
+      waiting_bytes = 0;
+    };
+    for_each_piece(reader, begin, end, [&](std::uint64_t first, const std::vector<double>& xyz) {
+      for(std::size_t k = 0; k < xyz.size(); k += 3) {
+        plan.add_point(xyz[k], xyz[k + 1]);
+        const std::uint64_t index = first + k / 3;
+        plan.for_each_tile_holding(xyz[k], xyz[k + 1], [&](std::size_t t) {
+          std::string& w = waiting[t];
+          w.append(reinterpret_cast<const char*>(&index), 8);
+          w.append(reinterpret_cast<const char*>(&xyz[k]), 24);
+          waiting_bytes += 32;
+        });
+      }
+      progress.fraction(double(first + xyz.size() / 3 - begin) / double(std::max<std::uint64_t>(end - begin, 1)));
+      if(waiting_bytes > (std::size_t(64) << 20))
+        flush();
+    });
+    flush();
+  });
+  std::vector<std::uint64_t> counts(plan.number_of_points.begin(), plan.number_of_points.end());
+  ranks.sum(counts);
+  plan.number_of_points.assign(counts.begin(), counts.end());
+  return plan;
+}
+
+// The plan file: the key, the grid, the tiles' counts and the number of parts of the tiles' point
+// files (the ranks that wrote them).
+std::string plan_text(const std::string& key, const PSOR::Tile_plan& plan, int parts, const std::array<double, 3>& lowest)
+{
+  std::ostringstream p;
+  p.precision(17);
+  p << key << "parts " << parts << "\nlowest " << lowest[0] << ' ' << lowest[1] << ' ' << lowest[2] << "\norigin " << plan.origin[0] << ' ' << plan.origin[1] << "\ngrid " << plan.columns
+    << ' ' << plan.rows << "\ncounts";
+  for(std::size_t t = 0; t < plan.number_of_tiles(); ++t)
+    if(plan.number_of_points[t] > 0)
+      p << ' ' << t << ' ' << plan.number_of_points[t];
+  p << "\nend\n";
+  return p.str();
+}
+
+// The plan of a plan file's `text` when it was made with `key`.
+bool read_plan(const std::string& text, const std::string& key, const PSOR::Recognize_objects_options& o,
+               PSOR::Tile_plan& plan, int& parts, std::array<double, 3>& lowest)
+{
+  if(text.compare(0, key.size(), key) != 0)
+    return false;
+  std::istringstream in(text.substr(key.size()));
+  std::string word;
+  plan.tile_size = o.tile_size, plan.tile_margin = o.tile_margin;
+  if(!(in >> word >> parts >> word >> lowest[0] >> lowest[1] >> lowest[2] >> word >> plan.origin[0] >> plan.origin[1] >>
+       word >> plan.columns >> plan.rows >> word) ||
+     word != "counts" || parts < 1)
+    return false;
+  plan.number_of_points.assign(plan.number_of_tiles(), 0);
+  std::size_t t = 0, count = 0;
+  while(in >> word && word != "end") {
+    t = std::stoull(word);
+    if(!(in >> count) || t >= plan.number_of_tiles())
+      return false;
+    plan.number_of_points[t] = count;
+  }
+  return word == "end";
+}
+
+// The points that tile t holds, from its files (one per rank that indexed, each in the scan's
+// order, rank after rank: the scan's order): their scan indices and coordinates.
+void read_tile_points(const fs::path& dir, std::size_t t, int parts, std::vector<std::uint64_t>& index,
+                      std::vector<Point_3>& points)
+{
+  index.clear();
+  points.clear();
+  for(int part = 0; part < parts; ++part) {
+    const fs::path file = dir / "points" / (std::to_string(t) + "." + std::to_string(part));
+    std::error_code ec;
+    if(!fs::exists(file, ec))
+      continue;
+    const std::string bytes = read_file(file);
+    if(bytes.size() % 32 != 0)
+      throw Cli_error(file.string() + ": not whole point records (remove the work folder and run again)");
+    for(std::size_t k = 0; k < bytes.size() / 32; ++k) {
+      std::uint64_t i = 0;
+      double xyz[3];
+      std::memcpy(&i, bytes.data() + 32 * k, 8);
+      std::memcpy(xyz, bytes.data() + 32 * k + 8, 24);
+      index.push_back(i);
+      points.emplace_back(xyz[0], xyz[1], xyz[2]);
+    }
+  }
+}
+
+// A tile's result as a file: its square and counts, the kinds of its own points that are not
+// ground, its locations with their objects (scan indices and each point's horizontal distance
+// to the location), classes and features.
+std::string tile_result_bytes(const PSOR::Tile_plan& plan, std::size_t t, const std::vector<std::uint64_t>& index,
+                              const std::vector<Point_3>& points, const PSOR::Tile_recognition& r)
+{
+  Record_writer w;
+  w.bytes.append(tile_magic, 8);
+  w.put<std::uint64_t>(t);
+  w.put<std::uint64_t>(r.tile.number_of_points);
+  w.put<double>(r.tile.seconds);
+  std::vector<std::uint64_t> own;
+  for(std::size_t k = 0; k < points.size(); ++k)
+    if(r.kind[k] != PSOR::Point_kind::GROUND && plan.tile_of(points[k].x(), points[k].y()) == t)
+      own.push_back(k);
+  w.put<std::uint64_t>(own.size());
+  for(std::uint64_t k : own) {
+    w.put<std::uint64_t>(index[k]);
+    w.put<std::uint8_t>(std::uint8_t(r.kind[k]));
+  }
+  w.put<std::uint64_t>(r.locations.size());
+  for(std::size_t k = 0; k < r.locations.size(); ++k) {
+    const PSOR::Object_location& l = r.locations[k];
+    const PSOR::Object_segmentation& s = r.objects[k];
+    for(double c : l.position)
+      w.put<double>(c);
+    w.put<std::uint64_t>(l.number_of_points);
+    w.put<double>(l.height);
+    w.put<double>(s.radius);
+    w.put<double>(s.cut_cost);
+    w.put<double>(s.seconds);
+    w.put<std::uint64_t>(s.seed == PSOR::Object_segmentation::no_point ? ~std::uint64_t(0) : index[s.seed]);
+    w.put<std::uint64_t>(s.points.size());
+    for(std::size_t i : s.points) {
+      w.put<std::uint64_t>(index[i]);
+      w.put<double>(std::hypot(points[i].x() - l.position[0], points[i].y() - l.position[1]));
+    }
+  }
+  w.put<std::uint64_t>(r.labels.size());
+  for(std::size_t k = 0; k < r.labels.size(); ++k) {
+    w.put<std::uint64_t>(r.labels[k]);
+    w.put<double>(r.confidences[k]);
+  }
+  w.put<std::uint64_t>(r.features.size());
+  w.put<std::uint64_t>(r.features.empty() ? 0 : r.features.front().size());
+  for(const std::vector<double>& row : r.features)
+    for(double v : row)
+      w.put<double>(v);
+  w.bytes.append(tile_magic, 8);
+  return w.bytes;
+}
+
+// The objects' points with their distances, per location of a tile (merge_tile()).
+struct Claims
+{
+  std::unordered_map<std::uint64_t, double> distance; // of the point to its object's location
+};
+
+// Merges the result file of a tile into `m` as recognize_objects() merges tiles: its locations
+// after those merged before, the kinds of its own points, each point of its objects claimed by
+// the nearest location (the first at equal distances).
+void merge_tile(const fs::path& file, const PSOR::Tile_plan& plan, std::size_t t, Recognition_in_tiles& m, Claims& claims)
+{
+  const std::string bytes = read_file(file);
+  Record_reader in{bytes};
+  const auto check = [&](bool ok) {
+    if(!ok)
+      throw Cli_error(file.string() + ": not a tile result of this program (remove the work folder and run again)");
+  };
+  check(bytes.size() >= 16 && std::memcmp(bytes.data(), tile_magic, 8) == 0 &&
+        std::memcmp(bytes.data() + bytes.size() - 8, tile_magic, 8) == 0);
+  in.at = 8;
+  check(in.get<std::uint64_t>() == t);
+  PSOR::Scene_tile tile = plan.tile(t);
+  tile.number_of_points = std::size_t(in.get<std::uint64_t>());
+  tile.seconds = in.get<double>();
+  PSOR::Object_recognition_result& r = m.result;
+  r.largest_tile = std::max(r.largest_tile, tile.number_of_points);
+  const std::uint64_t begin = m.first, end = m.first + m.ground.size();
+  for(std::uint64_t k = 0, n = in.get<std::uint64_t>(); k < n; ++k) {
+    const std::uint64_t i = in.get<std::uint64_t>();
+    const bool ground = in.get<std::uint8_t>() == std::uint8_t(PSOR::Point_kind::GROUND);
+    if(i >= begin && i < end)
+      m.ground[i - begin] = ground;
+  }
+  const std::uint64_t locations = in.get<std::uint64_t>();
+  tile.number_of_locations = std::size_t(locations);
+  for(std::uint64_t k = 0; k < locations; ++k) {
+    PSOR::Object_location l;
+    for(double& c : l.position)
+      c = in.get<double>();
+    l.number_of_points = std::size_t(in.get<std::uint64_t>());
+    l.height = in.get<double>();
+    PSOR::Object_segmentation s;
+    s.radius = in.get<double>();
+    s.cut_cost = in.get<double>();
+    s.seconds = in.get<double>();
+    const std::uint64_t seed = in.get<std::uint64_t>();
+    s.seed = seed == ~std::uint64_t(0) ? PSOR::Object_segmentation::no_point : std::size_t(seed);
+    const int id = int(r.objects.size());
+    for(std::uint64_t p = 0, n = in.get<std::uint64_t>(); p < n; ++p) {
+      const std::uint64_t i = in.get<std::uint64_t>();
+      const double d = in.get<double>();
+      if(i < begin || i >= end)
+        continue;
+      s.points.push_back(std::size_t(i));
+      int& claim = m.object[i - begin];
+      if(claim < 0 || d < claims.distance[i])
+        claim = id, claims.distance[i] = d;
+    }
+    r.locations.push_back(l);
+    r.objects.push_back(std::move(s));
+  }
+  for(std::uint64_t k = 0, n = in.get<std::uint64_t>(); k < n; ++k) {
+    r.labels.push_back(std::size_t(in.get<std::uint64_t>()));
+    r.confidences.push_back(in.get<double>());
+  }
+  const std::uint64_t rows = in.get<std::uint64_t>(), columns = in.get<std::uint64_t>();
+  for(std::uint64_t k = 0; k < rows; ++k) {
+    std::vector<double> row(columns);
+    for(double& v : row)
+      v = in.get<double>();
+    r.features.push_back(std::move(row));
+  }
+  check(in.at + 8 == bytes.size());
+  r.tiles.push_back(tile);
+}
+
+// Whether tile t must fail: the tests' way to make one rank fail (SHAPE_ANALYSIS_FAIL_TILE=t).
+bool fail_on_purpose(std::size_t t)
+{
+  const char* v = std::getenv("SHAPE_ANALYSIS_FAIL_TILE");
+  return v && std::to_string(t) == v;
+}
+
+// Runs body() on `threads` threads (0: as many as TBB chooses) at once, each until it returns.
+template <typename Body>
+void on_threads(std::size_t threads, const Body& body)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(threads != 1) {
+    tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : int(threads));
+    arena.execute([&]() {
+      const std::size_t workers = std::size_t(arena.max_concurrency());
+      tbb::parallel_for(std::size_t(0), workers, std::size_t(1), [&](std::size_t) { body(); });
+    });
+    return;
+  }
+#endif
+  body();
+}
+
+// The tiles that own points, recognized by the ranks and their threads, each taking the next tile
+// not taken (a slow tile does not hold the others back); a tile finished before is skipped.
+// Returns the tiles skipped.
+std::size_t recognize_tiles(const PSOR::Tile_plan& plan, int parts, const fs::path& dir, std::size_t threads,
+                            const Tile_recognizer& recognize, Progress& progress)
+{
+  const Ranks& ranks = Ranks::world();
+  // The largest tiles first: the last tiles taken are small ones, so the ranks and threads end
+  // together (the results do not depend on the order).
+  std::vector<std::size_t> busy = plan.tiles_with_points();
+  std::stable_sort(busy.begin(), busy.end(), [&](std::size_t a, std::size_t b) {
+    return plan.number_of_points[a] > plan.number_of_points[b];
+  });
+  progress.stage("recognizing the objects of " + std::to_string(busy.size()) + " tiles");
+  std::size_t reused = 0, finished = 0;
+  Ranks::Counter counter(ranks);
+  together(ranks, [&]() {
+    std::mutex mutex; // guards `failure`, the counts and the progress
+    std::string failure;
+    on_threads(threads, [&]() {
+      for(std::uint64_t b = counter.next(); b < busy.size(); b = counter.next()) {
+        const std::size_t t = busy[std::size_t(b)];
+        const fs::path result = dir / "tiles" / std::to_string(t);
+        std::error_code exists;
+        bool done = fs::exists(result, exists);
+        if(!done) {
+          try {
+            std::vector<std::uint64_t> index;
+            std::vector<Point_3> points;
+            read_tile_points(dir, t, parts, index, points);
+            if(fail_on_purpose(t))
+              throw Cli_error("failed on purpose (SHAPE_ANALYSIS_FAIL_TILE)");
+            const PSOR::Tile_recognition r = recognize(plan, t, points);
+            write_whole_file(result, tile_result_bytes(plan, t, index, points, r));
+          } catch(const std::exception& e) {
+            std::lock_guard<std::mutex> lock(mutex);
+            if(failure.empty())
+              failure = "tile " + std::to_string(t) + ": " + e.what();
+            return;
+          }
+        }
+        std::lock_guard<std::mutex> lock(mutex);
+        reused += done;
+        progress.fraction(double(++finished) / double(busy.size()));
+      }
+    });
+    if(!failure.empty())
+      throw Cli_error(failure + " (the finished tiles stay in " + dir.string() + ")");
+  });
+  std::vector<std::uint64_t> total = {reused};
+  ranks.sum(total);
+  return std::size_t(total[0]);
+}
+
+} // namespace
+
+Recognition_in_tiles recognize_in_tiles(const PSOR::Point_set_file_reader& reader, const std::string& work_dir,
+                                        const PSOR::Recognize_objects_options& options, const std::string& identity,
+                                        const Tile_recognizer& recognize, Progress& progress)
+{
+  const Ranks& ranks = Ranks::world();
+  const fs::path dir(work_dir);
+  const std::uint64_t n = reader.number_of_points();
+  Recognition_in_tiles m;
+  m.first = n * std::uint64_t(ranks.rank()) / std::uint64_t(ranks.size());
+  const std::uint64_t last = n * std::uint64_t(ranks.rank() + 1) / std::uint64_t(ranks.size());
+  Stopwatch indexing;
+  const std::string key = plan_key(reader, options, identity);
+  std::string text;
+  together(ranks, [&]() {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if(!fs::is_directory(dir, ec))
+      throw Cli_error("--work-dir " + work_dir + ": not a folder that can be created");
+    if(ranks.rank() == 0 && fs::exists(dir / "plan", ec))
+      text = read_file(dir / "plan");
+  });
+  text = ranks.broadcast(text);
+  PSOR::Tile_plan plan;
+  int parts = ranks.size();
+  if(!read_plan(text, key, options, plan, parts, m.lowest)) { // a new plan: the tiles done before are not for it
+    parts = ranks.size();
+    together(ranks, [&]() {
+      std::error_code ec;
+      if(ranks.rank() == 0) {
+        fs::remove(dir / "plan", ec);
+        fs::remove_all(dir / "tiles", ec);
+      }
+    });
+    plan = index_scan(reader, dir, options, m.first, last, m.lowest, progress);
+    together(ranks, [&]() {
+      if(ranks.rank() == 0)
+        write_whole_file(dir / "plan", plan_text(key, plan, parts, m.lowest));
+    });
+  }
+  together(ranks, [&]() { fs::create_directories(dir / "tiles"); });
+  m.seconds_indexing = indexing.seconds();
+  m.tiles_reused = recognize_tiles(plan, parts, dir, options.number_of_threads, recognize, progress);
+
+  progress.stage("merging the tiles");
+  m.object.assign(std::size_t(last - m.first), -1);
+  m.ground.assign(std::size_t(last - m.first), 1);
+  together(ranks, [&]() {
+    Claims claims;
+    for(std::size_t t : plan.tiles_with_points())
+      merge_tile(dir / "tiles" / std::to_string(t), plan, t, m, claims);
+  });
+  // An object holds no point that its own tile calls ground.
+  m.object_points.assign(m.result.objects.size(), 0);
+  for(std::size_t k = 0; k < m.result.objects.size(); ++k) {
+    std::vector<std::size_t>& points = m.result.objects[k].points;
+    points.erase(std::remove_if(points.begin(), points.end(), [&](std::size_t i) { return m.ground[i - m.first] != 0; }),
+                 points.end());
+    m.object_points[k] = points.size();
+  }
+  ranks.sum(m.object_points);
+  for(std::size_t i = 0; i < m.object.size(); ++i)
+    if(m.ground[i])
+      m.object[i] = -1;
+  return m;
+}
+
+namespace {
+
+// The points first to first + count - 1 of the scan with this rank's objects, kinds and labels
+// for those in its part (-1, 0, -1 for the others).
+struct Piece
+{
+  CGAL::Point_set_3<Point_3> points;
+  std::vector<int> object, label;
+  std::vector<char> ground;
+};
+
+Piece read_piece(const PSOR::Point_set_file_reader& reader, const Recognition_in_tiles& m, const std::vector<int>& label,
+                 std::uint64_t first, std::size_t count)
+{
+  Piece p;
+  reader.read(first, count, p.points);
+  p.object.assign(count, -1);
+  p.ground.assign(count, 0);
+  if(!label.empty())
+    p.label.assign(count, -1);
+  for(std::size_t k = 0; k < count; ++k)
+    if(first + k >= m.first && first + k - m.first < m.object.size()) {
+      const std::size_t i = std::size_t(first + k - m.first);
+      p.object[k] = m.object[i], p.ground[k] = m.ground[i];
+      if(!label.empty())
+        p.label[k] = label[i];
+    }
+  return p;
+}
+
+// Writes `bytes` at `offset` of the file `path`.
+void write_at(const std::string& path, std::uint64_t offset, const char* bytes, std::size_t size)
+{
+  std::fstream out(path, std::ios::binary | std::ios::in | std::ios::out);
+  out.seekp(std::streamoff(offset));
+  if(!out.write(bytes, std::streamsize(size)) || !out.flush())
+    throw Cli_error("error while writing '" + path + "' (disk full?)");
+}
+
+} // namespace
+
+void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path,
+                                  const PSOR::Point_set_file_reader& reader, const Recognition_in_tiles& m,
+                                  const std::string& command, const std::vector<int>& label,
+                                  const std::string& comment, const std::vector<std::string>& class_names,
+                                  std::size_t piece)
+{
+  const Ranks& ranks = Ranks::world();
+  const std::uint64_t n = reader.number_of_points(), last = m.first + m.object.size();
+  const bool las = lower_extension(path) == ".las";
+  // The bytes of a piece as a PLY file of its own (header and records).
+  const auto ply_bytes = [&](const Piece& p) {
+    std::ostringstream bytes;
+    write_objects_file(bytes, false, reader.filename(), p.points, p.object, p.ground, command, p.label, comment, class_names);
+    return bytes.str();
+  };
+  // The header (a placeholder of its size for LAS, written at the end) and the records' size, from
+  // the first point; rank 0 stages the file with it.
+  std::string header, temporary;
+  std::size_t record = 0;
+  std::unique_ptr<PSOR::Las_point_set_pieces<Point_3>> las_pieces;
+  std::vector<std::pair<unsigned, std::string>> names;
+  together(ranks, [&]() {
+    const Piece one = read_piece(reader, m, label, 0, 1);
+    if(las) {
+      las_pieces = std::make_unique<PSOR::Las_point_set_pieces<Point_3>>(
+        objects_las_points(reader.filename(), one.points, one.object, one.ground, one.label, class_names, names),
+        m.lowest, PSOR::parameters::class_names(names));
+      header.assign(las_pieces->header({}).size(), '\0');
+      record = las_pieces->record_length();
+    } else {
+      const std::string bytes = ply_bytes(one);
+      const std::size_t end = bytes.find("end_header\n"), count = bytes.find("element vertex 1\n");
+      if(end == std::string::npos || count == std::string::npos || count > end)
+        throw Cli_error("cannot write " + path);
+      header = bytes.substr(0, count) + "element vertex " + std::to_string(n) + "\n" +
+               bytes.substr(count + 17, end + 11 - count - 17);
+      record = bytes.size() - end - 11;
+    }
+    if(ranks.rank() == 0)
+      outputs.stage_file(path, [&](const std::string& file) {
+        temporary = file;
+        std::ofstream out(file, std::ios::binary | std::ios::trunc);
+        if(!out.write(header.data(), std::streamsize(header.size())) || !out.flush())
+          throw Cli_error("cannot write '" + path + "'");
+      });
+  });
+  temporary = ranks.broadcast(temporary);
+  // Each rank its own records, in place.
+  PSOR::Las_point_set_pieces<Point_3>::Summary summary;
+  together(ranks, [&]() {
+    for(std::uint64_t first = m.first; first < last; first += piece) {
+      const std::size_t count = std::size_t(std::min<std::uint64_t>(piece, last - first));
+      const Piece p = read_piece(reader, m, label, first, count);
+      if(las) {
+        std::vector<unsigned char> bytes;
+        try {
+          summary.merge(las_pieces->records(
+            objects_las_points(reader.filename(), p.points, p.object, p.ground, p.label, class_names, names), bytes));
+        } catch(const CGAL::Shape_analysis::Bad_input& e) {
+          throw Cli_error(e.what());
+        }
+        write_at(temporary, header.size() + first * record, reinterpret_cast<const char*>(bytes.data()), bytes.size());
+      } else {
+        const std::string bytes = ply_bytes(p);
+        const std::size_t end = bytes.find("end_header\n") + 11;
+        if(bytes.size() - end != count * record)
+          throw Cli_error("cannot write '" + path + "': records of different sizes");
+        write_at(temporary, header.size() + first * record, bytes.data() + end, bytes.size() - end);
+      }
+    }
+  });
+  if(!las)
+    return;
+  // The LAS header: the counts of every rank, the box of every rank's records.
+  std::vector<std::uint64_t> counts(summary.by_return.begin(), summary.by_return.end());
+  counts.push_back(summary.number_of_points);
+  ranks.sum(counts);
+  std::vector<double> lo(summary.min.begin(), summary.min.end()), hi(summary.max.begin(), summary.max.end());
+  if(summary.number_of_points == 0)
+    lo.assign(3, 1e300), hi.assign(3, -1e300);
+  ranks.min_max(lo, hi);
+  together(ranks, [&]() {
+    if(ranks.rank() != 0)
+      return;
+    PSOR::Las_point_set_pieces<Point_3>::Summary all;
+    std::copy(counts.begin(), counts.begin() + 15, all.by_return.begin());
+    all.number_of_points = counts[15];
+    std::copy(lo.begin(), lo.end(), all.min.begin());
+    std::copy(hi.begin(), hi.end(), all.max.begin());
+    const std::vector<unsigned char> bytes = las_pieces->header(all);
+    write_at(temporary, 0, reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  });
+}
+
+} // namespace shape_analysis_cli

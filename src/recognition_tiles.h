@@ -1,0 +1,71 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef SHAPE_ANALYSIS_RECOGNITION_TILES_H
+#define SHAPE_ANALYSIS_RECOGNITION_TILES_H
+
+// `points recognize --work-dir`: the recognition of a scan larger than memory. The scan is read
+// piece by piece (PSOR::Point_set_file_reader); a first pass finds its box, a second counts the
+// points of the tiles (PSOR::Tile_plan) and writes each tile's points (its own and its margin's)
+// to the work folder; the tiles are then recognized a few at a time (PSOR::recognize_tile), each
+// result written to the work folder, and merged in the order of the tiles as
+// recognize_objects() merges them. Memory: the tiles in flight and 5 bytes per point (the
+// object and kind of every point, for the output). A run that stops (killed, or a tile that
+// fails) leaves the finished tiles in the work folder; the next run with the same input and
+// options goes on from them.
+
+#include "points_common.h"
+
+#include <CGAL/Point_set_object_recognition/Point_set_file_reader.h>
+#include <CGAL/Point_set_object_recognition/recognize_objects.h>
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace shape_analysis_cli {
+
+// Recognizes one tile from the points it holds (PSOR::recognize_tile() with the run's options).
+typedef std::function<PSOR::Tile_recognition(const PSOR::Tile_plan&, std::size_t, const std::vector<Point_3>&)>
+  Tile_recognizer;
+
+// What the run found: the recognition without its per-point vectors, and per point of this
+// rank's part of the scan (the points `first` to `first + object.size() - 1`) its object (the
+// row of its location, -1 for none) and whether it is ground.
+struct Recognition_in_tiles
+{
+  PSOR::Object_recognition_result result; // object_of_point and kind left empty; objects' points: this rank's
+  std::vector<std::uint64_t> object_points; // per object, its points that are not ground (all ranks')
+  std::array<double, 3> lowest{{0, 0, 0}}; // the smallest coordinates of the scan
+  std::uint64_t first = 0;
+  std::vector<int> object;
+  std::vector<char> ground;
+  std::size_t tiles_reused = 0; // tiles found finished in the work folder
+  double seconds_indexing = 0;  // the two passes over the scan
+};
+
+// The recognition of the scan of `reader` in tiles of `options` (its tile_size, tile_margin,
+// tile_origin and number_of_threads), the work in `work_dir` (created if needed), by the run's
+// ranks (collective; with several, the work folder must be one they all see). `identity`
+// names what else decides a tile's result (methods, model): finished tiles are reused only
+// when it and the scan are the same. Throws Cli_error on a scan it cannot read or a folder it
+// cannot write.
+Recognition_in_tiles recognize_in_tiles(const PSOR::Point_set_file_reader& reader, const std::string& work_dir,
+                                        const PSOR::Recognize_objects_options& options, const std::string& identity,
+                                        const Tile_recognizer& recognize, Progress& progress);
+
+// Stages the segmented points of a scan read piece by piece as PLY (stage_objects_file()'s
+// content, the same bytes), one piece of `piece` points at a time, each rank writing the records
+// of its part of the scan (`m.first`, `m.object`, `m.ground`; `label` as `m.object`) into the file
+// that rank 0 stages in `outputs` (collective).
+void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path,
+                                  const PSOR::Point_set_file_reader& reader, const Recognition_in_tiles& m,
+                                  const std::string& command,
+                                  const std::vector<int>& label, const std::string& comment,
+                                  const std::vector<std::string>& class_names, std::size_t piece = std::size_t(1) << 18);
+
+} // namespace shape_analysis_cli
+
+#endif // SHAPE_ANALYSIS_RECOGNITION_TILES_H

@@ -1,0 +1,230 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+// `points recognize --work-dir` (out of core): the scan read piece by piece and the tiles
+// processed from the work folder give the bytes of the run that holds the scan in memory; a
+// second run reuses every finished tile; runs killed (SIGKILL) at random moments, three times in
+// a row, then run to their end, give the same bytes. With MPI: the ranks of `mpirun -np 2` and
+// `-np 3` give the same bytes; a rank that fails makes the job fail with one message and no
+// output, and the job run again finishes it; whole jobs killed (SIGKILL to mpirun and its ranks)
+// three times resume to the same bytes. The tool is run as a process on a generated street.
+
+#include <gtest/gtest.h>
+
+#include "tool_process.h"
+
+#include <chrono>
+#include <fstream>
+#include <csignal>
+#include <iostream>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace tool_process;
+
+// The number after `"name": ` in a report, or -1.
+long report_number(const std::string& report, const std::string& name)
+{
+  const std::size_t at = report.find("\"" + name + "\": ");
+  return at == std::string::npos ? -1 : std::stol(report.substr(at + name.size() + 4));
+}
+
+class TilesTest : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    root = fs::temp_directory_path() / ("shape_analysis_tiles_" + std::to_string(::getpid()));
+    fs::remove_all(root);
+    fs::create_directories(root);
+    scan = (root / "scan.ply").string();
+    ASSERT_TRUE(run_tool({"points", "generate", "--points", "200000", "--length", "120", "--seed", "4", "-q", "-o", scan}));
+    ASSERT_TRUE(run_tool(recognize(root / "memory", "")));
+    objects = read_file(root / "memory" / "objects.ply");
+    locations = read_file(root / "memory" / "locations.csv");
+    ASSERT_GT(objects.size(), 200000u * 24);
+    ASSERT_GT(locations.size(), 100u);
+  }
+  void TearDown() override { fs::remove_all(root); }
+
+  // `points recognize` of the scan into `dir`, out of core in `work` unless it is empty.
+  std::vector<std::string> recognize(const fs::path& dir, const std::string& work) const
+  {
+    fs::create_directories(dir);
+    std::vector<std::string> args = {"points", "recognize", scan, "-q", "--tile-size", "15", "--threads", "2",
+                                     "-o", (dir / "objects.ply").string(), "--locations", (dir / "locations.csv").string(),
+                                     "--report", (dir / "report.json").string()};
+    if(!work.empty())
+      args.insert(args.end(), {"--work-dir", work});
+    return args;
+  }
+
+  fs::path root;
+  std::string scan, objects, locations;
+};
+
+TEST_F(TilesTest, OutOfCoreGivesTheInMemoryBytesAndReusesFinishedTiles)
+{
+  const std::string work = (root / "work").string();
+  ASSERT_TRUE(run_tool(recognize(root / "first", work)));
+  EXPECT_TRUE(read_file(root / "first" / "objects.ply") == objects);
+  EXPECT_EQ(read_file(root / "first" / "locations.csv"), locations);
+  EXPECT_EQ(report_number(read_file(root / "first" / "report.json"), "tiles_reused"), 0);
+  long finished = 0;
+  for(const auto& entry : fs::directory_iterator(work + "/tiles"))
+    finished += entry.path().extension() != ".part";
+  EXPECT_GT(finished, 10);
+  // Again: every tile is read back from the work folder.
+  ASSERT_TRUE(run_tool(recognize(root / "second", work)));
+  EXPECT_TRUE(read_file(root / "second" / "objects.ply") == objects);
+  EXPECT_EQ(report_number(read_file(root / "second" / "report.json"), "tiles_reused"), finished);
+  // LAS (1.4, the points piece by piece, the header from every piece's records): the same bytes.
+  std::vector<std::string> las = recognize(root / "las", work);
+  las[9] = (root / "las" / "objects.las").string();
+  std::vector<std::string> las_in_memory = recognize(root / "las_memory", "");
+  las_in_memory[9] = (root / "las_memory" / "objects.las").string();
+  ASSERT_TRUE(run_tool(las));
+  ASSERT_TRUE(run_tool(las_in_memory));
+  EXPECT_GT(fs::file_size(root / "las" / "objects.las"), 200000u * 30);
+  EXPECT_TRUE(read_file(root / "las" / "objects.las") == read_file(root / "las_memory" / "objects.las"));
+  // Another tile size is another plan: nothing reused.
+  std::vector<std::string> other = recognize(root / "third", work);
+  other[5] = "20";
+  ASSERT_TRUE(run_tool(other));
+  EXPECT_EQ(report_number(read_file(root / "third" / "report.json"), "tiles_reused"), 0);
+}
+
+TEST_F(TilesTest, KilledRunsResumeToTheSameBytes)
+{
+  // The time of a whole out-of-core run, for the moments of the kills.
+  const auto start = std::chrono::steady_clock::now();
+  ASSERT_TRUE(run_tool(recognize(root / "timed", (root / "timed_work").string())));
+  const double whole = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> moment(0.05 * whole, 0.95 * whole);
+  long resumed = 0;
+  for(int round = 0; round < 4; ++round) {
+    const fs::path dir = root / ("round" + std::to_string(round));
+    const std::string work = (dir / "work").string();
+    for(int kill = 0; kill < 3; ++kill) {
+      const pid_t pid = start_tool(recognize(dir, work), 0);
+      ASSERT_GT(pid, 0);
+      std::this_thread::sleep_for(std::chrono::duration<double>(moment(random)));
+      ::kill(pid, SIGKILL);
+      wait_for(pid);
+    }
+    ASSERT_TRUE(run_tool(recognize(dir, work)));
+    EXPECT_TRUE(read_file(dir / "objects.ply") == objects) << "round " << round;
+    EXPECT_EQ(read_file(dir / "locations.csv"), locations) << "round " << round;
+    const long reused = report_number(read_file(dir / "report.json"), "tiles_reused");
+    std::cout << "round " << round << ": the last run reused " << reused << " tiles\n";
+    resumed += reused > 0;
+  }
+  // At least one of the runs went on from tiles a killed run had finished.
+  EXPECT_GT(resumed, 0);
+}
+
+#ifdef SHAPE_ANALYSIS_MPIRUN
+
+// The arguments of `mpirun -np ranks` running the tool with `args`, one thread per rank.
+std::vector<std::string> with_ranks(int ranks, std::vector<std::string> args)
+{
+  for(std::size_t k = 0; k + 1 < args.size(); ++k)
+    if(args[k] == "--threads")
+      args[k + 1] = "1";
+  args.insert(args.begin(), {"--allow-run-as-root", "--oversubscribe", "-np", std::to_string(ranks), tool});
+  return args;
+}
+
+TEST_F(TilesTest, RanksGiveTheSameBytes)
+{
+  for(int ranks : {2, 3}) {
+    const fs::path dir = root / ("ranks" + std::to_string(ranks));
+    const std::string errors = (root / "errors.txt").string();
+    Launch launch;
+    launch.standard_error = errors;
+    const int status = wait_for(start_program(SHAPE_ANALYSIS_MPIRUN, with_ranks(ranks, recognize(dir, (dir / "work").string())), launch));
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_file(errors);
+    EXPECT_TRUE(read_file(dir / "objects.ply") == objects) << ranks << " ranks";
+    if(ranks == 3) { // LAS: each rank its records, rank 0 the header of all
+      std::vector<std::string> las = recognize(dir, (dir / "work").string());
+      las[9] = (dir / "objects.las").string();
+      std::vector<std::string> las_in_memory = recognize(root / "las_memory", "");
+      las_in_memory[9] = (root / "las_memory" / "objects.las").string();
+      ASSERT_TRUE(run_tool(las_in_memory));
+      ASSERT_EQ(wait_for(start_program(SHAPE_ANALYSIS_MPIRUN, with_ranks(3, las), launch)), 0) << read_file(errors);
+      EXPECT_TRUE(read_file(dir / "objects.las") == read_file(root / "las_memory" / "objects.las"));
+    }
+    EXPECT_EQ(read_file(dir / "locations.csv"), locations) << ranks << " ranks";
+    const std::string report = read_file(dir / "report.json");
+    EXPECT_EQ(report_number(report, "ranks"), ranks);
+    // Each rank indexed its part of the scan: tiles' point files of every rank.
+    std::vector<int> parts(std::size_t(ranks), 0);
+    for(const auto& entry : fs::directory_iterator(dir / "work" / "points"))
+      ++parts[std::size_t(std::stoi(entry.path().extension().string().substr(1)))];
+    for(int r = 0; r < ranks; ++r)
+      EXPECT_GT(parts[std::size_t(r)], 0) << "rank " << r;
+  }
+}
+
+TEST_F(TilesTest, AFailingRankFailsTheJobWithOneMessage)
+{
+  const fs::path dir = root / "failing";
+  const std::string work = (dir / "work").string(), errors = (root / "errors.txt").string();
+  Launch launch;
+  launch.standard_error = errors;
+  launch.environment.emplace_back("SHAPE_ANALYSIS_FAIL_TILE", "5");
+  int status = wait_for(start_program(SHAPE_ANALYSIS_MPIRUN, with_ranks(2, recognize(dir, work)), launch));
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_NE(WEXITSTATUS(status), 0);
+  const std::string said = read_file(errors);
+  EXPECT_NE(said.find("tile 5: failed on purpose"), std::string::npos) << said;
+  EXPECT_EQ(said.find("error"), said.rfind("error")) << said; // one message
+  for(const char* output : {"objects.ply", "locations.csv", "report.json"})
+    EXPECT_FALSE(fs::exists(dir / output)) << output;
+  for(const auto& entry : fs::directory_iterator(dir))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
+  // Run again (without the fault): the finished tiles are reused, the outputs the same bytes.
+  launch.environment.clear();
+  status = wait_for(start_program(SHAPE_ANALYSIS_MPIRUN, with_ranks(2, recognize(dir, work)), launch));
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_file(errors);
+  EXPECT_TRUE(read_file(dir / "objects.ply") == objects);
+  EXPECT_GT(report_number(read_file(dir / "report.json"), "tiles_reused"), 0);
+}
+
+TEST_F(TilesTest, KilledJobsResumeToTheSameBytes)
+{
+  const fs::path dir = root / "killed";
+  const std::string work = (dir / "work").string();
+  Launch launch;
+  launch.own_group = true;
+  launch.standard_error = (root / "errors.txt").string();
+  const auto start = std::chrono::steady_clock::now();
+  wait_for(start_program(SHAPE_ANALYSIS_MPIRUN, with_ranks(2, recognize(root / "timed", (root / "timed_work").string())), launch));
+  const double whole = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> moment(0.1 * whole, 0.9 * whole);
+  for(int kill = 0; kill < 3; ++kill) {
+    const pid_t pid = start_program(SHAPE_ANALYSIS_MPIRUN, with_ranks(2, recognize(dir, work)), launch);
+    ASSERT_GT(pid, 0);
+    std::this_thread::sleep_for(std::chrono::duration<double>(moment(random)));
+    ::killpg(pid, SIGKILL); // the whole job: mpirun and its ranks
+    wait_for(pid);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(200)); // ranks already gone or going
+  const int status = wait_for(start_program(SHAPE_ANALYSIS_MPIRUN, with_ranks(2, recognize(dir, work)), launch));
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_file(root / "errors.txt");
+  EXPECT_TRUE(read_file(dir / "objects.ply") == objects);
+  EXPECT_EQ(read_file(dir / "locations.csv"), locations);
+  std::cout << "after 3 killed jobs, the last reused " << report_number(read_file(dir / "report.json"), "tiles_reused")
+            << " tiles\n";
+}
+
+#endif
+
+} // namespace
