@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <iostream>
 
 #ifdef SHAPE_ANALYSIS_WITH_MPI
 #include <mpi.h>
@@ -152,7 +153,18 @@ std::uint64_t Ranks::Counter::next()
 
 #else // one process
 
-void Ranks::initialize(int&, char**&) {}
+void Ranks::initialize(int&, char**&)
+{
+  // Started by mpirun as one of several: each would run the whole job. Refused (by the first).
+  const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
+  if(size && std::atoi(size) > 1) {
+    const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
+    if(!rank || std::atoi(rank) == 0)
+      std::cerr << "shape_analysis: error: this shape_analysis was built without MPI: run it without mpirun"
+                << std::endl;
+    std::exit(2);
+  }
+}
 void Ranks::finalize() {}
 void Ranks::barrier() const {}
 void Ranks::min_max(std::vector<double>&, std::vector<double>&) const {}
