@@ -44,6 +44,7 @@ namespace {
 struct Recognize_options
 {
   std::string input, output, locations, report, model, work_dir;
+  bool keep_going = false;
   PSOR::Recognize_objects_options recognition;
   std::string method = localization_method_name(recognition.localization_method);
   std::string segmentation = segmentation_method_name(recognition.segmentation_method);
@@ -190,6 +191,8 @@ int run_recognize(const Recognize_options& o)
   outputs.add_output(o.output, "segmented point cloud", {".ply", ".las"});
   if(ranks.size() > 1 && o.work_dir.empty())
     throw Usage_error("with several MPI ranks, give --work-dir (a folder that every rank sees)");
+  if(o.keep_going && o.work_dir.empty())
+    throw Usage_error("--keep-going goes with --work-dir");
   if(!o.locations.empty()) {
     outputs.add_output(o.locations, "locations", {".csv"});
   }
@@ -238,8 +241,14 @@ int run_recognize(const Recognize_options& o)
                    : PSOR::recognize_tile(plan, t, held, parameters);
     };
     Stopwatch work;
-    tiled = recognize_in_tiles(*reader, o.work_dir, ro, recognition_identity(o, ro), recognize, progress);
+    tiled = recognize_in_tiles(*reader, o.work_dir, ro, recognition_identity(o, ro), o.keep_going, recognize, progress);
     r = std::move(tiled.result);
+    if(o.keep_going) {
+      Json failed = Json::array();
+      for(const auto& f : tiled.failed_tiles)
+        failed.push_back({{"tile", f.first}, {"error", f.second}});
+      extra["failed_tiles"] = failed;
+    }
     extra["work_dir"] = o.work_dir;
     extra["ranks"] = ranks.size();
     extra["tiles_reused"] = tiled.tiles_reused;
@@ -326,6 +335,9 @@ int run_recognize(const Recognize_options& o)
   }
   std::cout << " in " << r.tiles.size() << " tiles (at most " << r.largest_tile << " points each) in " << seconds
             << " s\n";
+  if(!tiled.failed_tiles.empty())
+    std::cout << tiled.failed_tiles.size() << " tiles failed and were left out (the report's failed_tiles; run again "
+              << "to try them again)\n";
   return 0;
 }
 
@@ -445,6 +457,10 @@ void add_points_recognize_commands(CLI::App* points, std::function<int()>& run)
                         "done; memory holds the tiles in flight and 5 bytes per point. A run stopped midway goes "
                         "on from the finished tiles when run again with the same scan and options. Under mpirun, "
                         "the ranks share the work (the folder must be one they all see)");
+  recognize->add_flag("--keep-going", g->keep_going,
+                      "With --work-dir: a tile that cannot be processed is reported (the report's failed_tiles) "
+                      "and left out (its points neither ground nor in an object) instead of failing the run; "
+                      "the next run tries it again");
   recognize->add_option("--threads", ro.number_of_threads, "Largest number of threads (0: all cores)")
     ->capture_default_str();
   recognize->add_flag("-q,--quiet", g->quiet, "No progress on stderr");

@@ -420,10 +420,11 @@ void on_threads(std::size_t threads, const Body& body)
 }
 
 // The tiles that own points, recognized by the ranks and their threads, each taking the next tile
-// not taken (a slow tile does not hold the others back); a tile finished before is skipped.
+// not taken (a slow tile does not hold the others back); a tile finished before is skipped. A
+// tile that fails stops the run, or with `keep_going` leaves `tiles/<tile>.failed` (its error).
 // Returns the tiles skipped.
 std::size_t recognize_tiles(const PSOR::Tile_plan& plan, int parts, const fs::path& dir, std::size_t threads,
-                            const Tile_recognizer& recognize, Progress& progress)
+                            bool keep_going, const Tile_recognizer& recognize, Progress& progress)
 {
   const Ranks& ranks = Ranks::world();
   // The largest tiles first: the last tiles taken are small ones, so the ranks and threads end
@@ -444,6 +445,7 @@ std::size_t recognize_tiles(const PSOR::Tile_plan& plan, int parts, const fs::pa
         const fs::path result = dir / "tiles" / std::to_string(t);
         std::error_code exists;
         bool done = fs::exists(result, exists);
+        fs::remove(result.string() + ".failed", exists);
         if(!done) {
           try {
             std::vector<std::uint64_t> index;
@@ -454,6 +456,12 @@ std::size_t recognize_tiles(const PSOR::Tile_plan& plan, int parts, const fs::pa
             const PSOR::Tile_recognition r = recognize(plan, t, points);
             write_whole_file(result, tile_result_bytes(plan, t, index, points, r));
           } catch(const std::exception& e) {
+            if(keep_going) {
+              std::string why = e.what();
+              std::replace(why.begin(), why.end(), '\n', ' ');
+              write_whole_file(result.string() + ".failed", why);
+              continue;
+            }
             std::lock_guard<std::mutex> lock(mutex);
             if(failure.empty())
               failure = "tile " + std::to_string(t) + ": " + e.what();
@@ -477,7 +485,7 @@ std::size_t recognize_tiles(const PSOR::Tile_plan& plan, int parts, const fs::pa
 
 Recognition_in_tiles recognize_in_tiles(const PSOR::Point_set_file_reader& reader, const std::string& work_dir,
                                         const PSOR::Recognize_objects_options& options, const std::string& identity,
-                                        const Tile_recognizer& recognize, Progress& progress)
+                                        bool keep_going, const Tile_recognizer& recognize, Progress& progress)
 {
   const Ranks& ranks = Ranks::world();
   const fs::path dir(work_dir);
@@ -516,15 +524,32 @@ Recognition_in_tiles recognize_in_tiles(const PSOR::Point_set_file_reader& reade
   }
   together(ranks, [&]() { fs::create_directories(dir / "tiles"); });
   m.seconds_indexing = indexing.seconds();
-  m.tiles_reused = recognize_tiles(plan, parts, dir, options.number_of_threads, recognize, progress);
+  m.tiles_reused = recognize_tiles(plan, parts, dir, options.number_of_threads, keep_going, recognize, progress);
 
   progress.stage("merging the tiles");
   m.object.assign(std::size_t(last - m.first), -1);
   m.ground.assign(std::size_t(last - m.first), 1);
   together(ranks, [&]() {
     Claims claims;
-    for(std::size_t t : plan.tiles_with_points())
-      merge_tile(dir / "tiles" / std::to_string(t), plan, t, m, claims);
+    for(std::size_t t : plan.tiles_with_points()) {
+      const fs::path result = dir / "tiles" / std::to_string(t);
+      std::error_code ec;
+      if(keep_going && fs::exists(result.string() + ".failed", ec)) {
+        // Left out: its own points are neither ground nor in an object.
+        m.failed_tiles.emplace_back(t, read_file(result.string() + ".failed"));
+        std::vector<std::uint64_t> index;
+        std::vector<Point_3> points;
+        read_tile_points(dir, t, parts, index, points);
+        for(std::size_t k = 0; k < points.size(); ++k)
+          if(index[k] >= m.first && index[k] < last && plan.tile_of(points[k].x(), points[k].y()) == t)
+            m.ground[std::size_t(index[k] - m.first)] = 0;
+        PSOR::Scene_tile tile = plan.tile(t);
+        tile.number_of_points = points.size();
+        m.result.tiles.push_back(tile);
+        continue;
+      }
+      merge_tile(result, plan, t, m, claims);
+    }
   });
   // An object holds no point that its own tile calls ground.
   m.object_points.assign(m.result.objects.size(), 0);

@@ -43,6 +43,7 @@ struct Recognition_in_tiles
   std::vector<int> object;
   std::vector<char> ground;
   std::size_t tiles_reused = 0; // tiles found finished in the work folder
+  std::vector<std::pair<std::size_t, std::string>> failed_tiles; // with keep_going: the tiles left out, their errors
   double seconds_indexing = 0;  // the two passes over the scan
 };
 
@@ -51,10 +52,11 @@ struct Recognition_in_tiles
 // ranks (collective; with several, the work folder must be one they all see). `identity`
 // names what else decides a tile's result (methods, model): finished tiles are reused only
 // when it and the scan are the same. Throws Cli_error on a scan it cannot read or a folder it
-// cannot write.
+// cannot write, and on a tile that fails unless `keep_going` (the tile is then left out: its own
+// points neither ground nor in an object; listed in `failed_tiles`).
 Recognition_in_tiles recognize_in_tiles(const PSOR::Point_set_file_reader& reader, const std::string& work_dir,
                                         const PSOR::Recognize_objects_options& options, const std::string& identity,
-                                        const Tile_recognizer& recognize, Progress& progress);
+                                        bool keep_going, const Tile_recognizer& recognize, Progress& progress);
 
 // Stages the segmented points of a scan read piece by piece as PLY (stage_objects_file()'s
 // content, the same bytes), one piece of `piece` points at a time, each rank writing the records

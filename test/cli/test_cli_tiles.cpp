@@ -129,6 +129,39 @@ TEST_F(TilesTest, KilledRunsResumeToTheSameBytes)
   EXPECT_GT(resumed, 0);
 }
 
+TEST_F(TilesTest, KeepGoingLeavesOutAFailingTileAndTheNextRunDoesIt)
+{
+  const fs::path dir = root / "keep_going";
+  const std::string work = (dir / "work").string();
+  std::vector<std::string> args = recognize(dir, work);
+  args.push_back("--keep-going");
+  Launch launch;
+  launch.environment.emplace_back("SHAPE_ANALYSIS_FAIL_TILE", "5");
+  launch.standard_error = (root / "errors.txt").string();
+  int status = wait_for(start_program(tool, args, launch));
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_file(root / "errors.txt");
+  const std::string report = read_file(dir / "report.json");
+  EXPECT_NE(report.find("\"tile\": 5"), std::string::npos) << report.substr(0, 2000);
+  EXPECT_NE(report.find("failed on purpose"), std::string::npos);
+  EXPECT_FALSE(read_file(dir / "objects.ply") == objects); // a tile's objects are missing
+  // Without --keep-going the same fault fails the run, with no output.
+  const fs::path strict = root / "strict";
+  status = wait_for(start_program(tool, recognize(strict, (strict / "work").string()), launch));
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  EXPECT_FALSE(fs::exists(strict / "objects.ply"));
+  // Run again without the fault: only tile 5 is done, the outputs are whole.
+  launch.environment.clear();
+  status = wait_for(start_program(tool, args, launch));
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_file(root / "errors.txt");
+  EXPECT_TRUE(read_file(dir / "objects.ply") == objects);
+  EXPECT_EQ(read_file(dir / "locations.csv"), locations);
+  long finished = 0;
+  for(const auto& entry : fs::directory_iterator(work + "/tiles"))
+    finished += entry.path().extension() != ".part" && entry.path().extension() != ".failed";
+  EXPECT_EQ(report_number(read_file(dir / "report.json"), "tiles_reused"), finished - 1);
+}
+
 #ifdef SHAPE_ANALYSIS_MPIRUN
 
 // The arguments of `mpirun -np ranks` running the tool with `args`, one thread per rank.
