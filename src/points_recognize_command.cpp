@@ -43,6 +43,7 @@ namespace {
 // (the methods by their command-line names, the tile origin as given).
 struct Recognize_options
 {
+  std::vector<std::string> inputs; // one without --work-dir
   std::string input, output, locations, report, model, work_dir;
   bool keep_going = false;
   PSOR::Recognize_objects_options recognition;
@@ -54,26 +55,8 @@ struct Recognize_options
   bool quiet = false, verbose = false;
 };
 
-// The scan of `points recognize --work-dir`, read piece by piece; refused (Cli_error) when it is
-// not LAS, binary PLY or KITTI, or already has the properties objects.ply adds.
-std::unique_ptr<PSOR::Point_set_file_reader> open_scan_in_pieces(const std::string& input)
-{
-  std::unique_ptr<PSOR::Point_set_file_reader> reader;
-  try {
-    reader = std::make_unique<PSOR::Point_set_file_reader>(input);
-    CGAL::Point_set_3<Point_3> first;
-    reader->read(0, 1, first);
-    for(const std::string& name : first.properties())
-      if(name == "object" || name == "ground")
-        throw Cli_error(input + " already has an 'object' or a 'ground' property");
-  } catch(const CGAL::Shape_analysis::Bad_input& e) {
-    throw Cli_error(std::string(e.what()) + " (--work-dir reads LAS, binary PLY and KITTI scans)");
-  }
-  return reader;
-}
-
 // The horizontal box of a scan read piece by piece (xmin, ymin, xmax, ymax).
-std::array<double, 4> horizontal_bbox_of_file(const PSOR::Point_set_file_reader& reader)
+std::array<double, 4> horizontal_bbox_of_file(const Scan_files& reader)
 {
   std::array<double, 4> b{{1e300, 1e300, -1e300, -1e300}};
   std::vector<double> xyz;
@@ -185,10 +168,13 @@ int run_recognize(const Recognize_options& o)
   const bool first = ranks.rank() == 0;
   Progress progress("points recognize", o.quiet || !first, o.verbose && first);
   Output_files outputs;
-  outputs.add_input(o.input);
+  for(const std::string& input : o.inputs)
+    outputs.add_input(input);
   if(!o.model.empty())
     outputs.add_input(o.model);
   outputs.add_output(o.output, "segmented point cloud", {".ply", ".las"});
+  if(o.inputs.size() > 1 && o.work_dir.empty())
+    throw Usage_error("several scans (or a folder) are recognized with --work-dir");
   if(ranks.size() > 1 && o.work_dir.empty())
     throw Usage_error("with several MPI ranks, give --work-dir (a folder that every rank sees)");
   if(o.keep_going && o.work_dir.empty())
@@ -218,7 +204,7 @@ int run_recognize(const Recognize_options& o)
   Recognition_in_tiles tiled;  // with --work-dir: this rank's part of the scan
   std::vector<int> object;     // without it: every point's object and kind
   std::vector<char> ground;
-  std::unique_ptr<PSOR::Point_set_file_reader> reader; // with --work-dir
+  std::unique_ptr<Scan_files> reader;  // with --work-dir
   CGAL::Point_set_3<Point_3> points;                   // without it
   double read_seconds = 0, seconds = 0;
   std::uint64_t n = 0;
@@ -231,7 +217,7 @@ int run_recognize(const Recognize_options& o)
                             .background_radius(ro.background_radius)
                             .number_of_threads(ro.number_of_threads);
   if(!o.work_dir.empty()) {
-    reader = open_scan_in_pieces(o.input);
+    reader = std::make_unique<Scan_files>(o.inputs);
     n = reader->number_of_points();
     format = reader->format();
     if(!o.origin.empty())
@@ -316,6 +302,8 @@ int run_recognize(const Recognize_options& o)
       report["objects"][k]["points"] = tiled.object_points[k];
     report["command"] = "points recognize";
     report["input"] = o.input;
+    if(reader && reader->files().size() > 1)
+      report["inputs"] = reader->files();
     report["format"] = format;
     report["number_of_points"] = n;
     report["points_per_second"] = seconds > 0 ? double(n) / seconds : 0.0;
@@ -411,7 +399,11 @@ void add_points_recognize_commands(CLI::App* points, std::function<int()>& run)
     "recognize", "Find and segment the objects of a scan of any size, tile by tile (ground estimate, background "
                  "removal, localization, min-cut segmentation), tiles in parallel: the memory of one tile per "
                  "thread; with --model, classify them.");
-  recognize->add_option("input", g->input, "The scan (.ply, .xyz, .las, .bin), metres, z up")->required();
+  recognize->add_option("input", g->inputs,
+                        "The scan (.ply, .xyz, .las, .bin), metres, z up; with --work-dir, several scans or folders "
+                        "of them (their .las, .ply and .bin files by name) with the same properties, recognized as "
+                        "one (their points one after the other in the outputs)")
+    ->required();
   recognize->add_option("-o,--output", g->output,
                         "The input's points in input order (.ply or .las) with their properties, 'object' (the "
                         "0-based row of the location in --locations, -1 for none), 'ground' (1: ground) and, with "
@@ -465,7 +457,10 @@ void add_points_recognize_commands(CLI::App* points, std::function<int()>& run)
     ->capture_default_str();
   recognize->add_flag("-q,--quiet", g->quiet, "No progress on stderr");
   recognize->add_flag("-v,--verbose", g->verbose, "Progress on stderr even when it is not a terminal");
-  recognize->callback([g, &run]() { run = [g]() { return run_recognize(*g); }; });
+  recognize->callback([g, &run]() {
+    g->input = g->inputs.front();
+    run = [g]() { return run_recognize(*g); };
+  });
 
   add_points_train_command(points, run);
 }

@@ -28,6 +28,7 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <typeindex>
 #include <sstream>
 #include <unordered_map>
 
@@ -86,16 +87,17 @@ void write_whole_file(const fs::path& path, const std::string& bytes)
     throw Cli_error("cannot rename " + temporary.string() + ": " + ec.message());
 }
 
-// What decides the plan and the tiles' results: the scan (path, size, time), the options.
-std::string plan_key(const PSOR::Point_set_file_reader& reader, const PSOR::Recognize_objects_options& o,
-                     const std::string& identity)
+// What decides the plan and the tiles' results: the scans (paths, sizes, times), the options.
+std::string plan_key(const Scan_files& reader, const PSOR::Recognize_objects_options& o, const std::string& identity)
 {
   std::ostringstream k;
   k.precision(17);
-  const fs::path scan = fs::absolute(reader.filename());
-  k << plan_magic << "\nscan " << scan.string() << ' ' << fs::file_size(scan) << ' '
-    << fs::last_write_time(scan).time_since_epoch().count() << ' ' << reader.number_of_points() << "\ntiles "
-    << o.tile_size << ' ' << o.tile_margin;
+  k << plan_magic << "\nscans " << reader.number_of_points();
+  for(const std::string& file : reader.files()) {
+    const fs::path scan = fs::absolute(file);
+    k << "\nscan " << scan.string() << ' ' << fs::file_size(scan) << ' ' << fs::last_write_time(scan).time_since_epoch().count();
+  }
+  k << "\ntiles " << o.tile_size << ' ' << o.tile_margin;
   if(o.tile_origin)
     k << ' ' << (*o.tile_origin)[0] << ' ' << (*o.tile_origin)[1];
   k << "\nrecognition " << identity << '\n';
@@ -120,7 +122,7 @@ void together(const Ranks& ranks, const F& f)
 
 // Calls f(first, xyz) for the pieces of the points [begin, end) of the scan, in order.
 template <typename F>
-void for_each_piece(const PSOR::Point_set_file_reader& reader, std::uint64_t begin, std::uint64_t end, const F& f)
+void for_each_piece(const Scan_files& reader, std::uint64_t begin, std::uint64_t end, const F& f)
 {
   const std::size_t piece = std::size_t(1) << 20;
   std::vector<double> xyz;
@@ -132,7 +134,7 @@ void for_each_piece(const PSOR::Point_set_file_reader& reader, std::uint64_t beg
 
 // The plan of the scan and each tile's points in `points/<tile>.<rank>`, from two passes of every
 // rank over its part of the scan.
-PSOR::Tile_plan index_scan(const PSOR::Point_set_file_reader& reader, const fs::path& dir,
+PSOR::Tile_plan index_scan(const Scan_files& reader, const fs::path& dir,
                            const PSOR::Recognize_objects_options& o, std::uint64_t begin, std::uint64_t end,
                            std::array<double, 3>& lowest, Progress& progress)
 {
@@ -483,7 +485,89 @@ std::size_t recognize_tiles(const PSOR::Tile_plan& plan, int parts, const fs::pa
 
 } // namespace
 
-Recognition_in_tiles recognize_in_tiles(const PSOR::Point_set_file_reader& reader, const std::string& work_dir,
+Scan_files::Scan_files(const std::vector<std::string>& inputs)
+{
+  std::vector<std::string> files;
+  for(const std::string& input : inputs) {
+    std::error_code ec;
+    if(!fs::is_directory(input, ec)) {
+      files.push_back(input);
+      continue;
+    }
+    std::vector<std::string> found;
+    for(const auto& entry : fs::directory_iterator(input, ec)) {
+      const std::string e = lower_extension(entry.path().string());
+      if(entry.is_regular_file(ec) && (e == ".las" || e == ".ply" || e == ".bin"))
+        found.push_back(entry.path().string());
+    }
+    if(found.empty())
+      throw Cli_error(input + ": a folder without .las, .ply or .bin files");
+    std::sort(found.begin(), found.end());
+    files.insert(files.end(), found.begin(), found.end());
+  }
+  std::vector<std::pair<std::string, std::type_index>> layout;
+  for(const std::string& file : files) {
+    try {
+      m_readers.emplace_back(file);
+      CGAL::Point_set_3<Point_3> one;
+      m_readers.back().read(0, 1, one);
+      for(const std::string& name : one.properties())
+        if(name == "object" || name == "ground")
+          throw Cli_error(file + " already has an 'object' or a 'ground' property");
+      const auto properties = one.properties_and_types();
+      if(m_readers.size() == 1)
+        layout = properties;
+      else if(properties != layout)
+        throw Cli_error(file + " has other properties than " + files.front() + " (the scans of a run must have the same)");
+    } catch(const CGAL::Shape_analysis::Bad_input& e) {
+      throw Cli_error(std::string(e.what()) + " (--work-dir reads LAS, binary PLY and KITTI scans)");
+    }
+    m_first.push_back(m_first.back() + m_readers.back().number_of_points());
+  }
+}
+
+std::vector<std::string> Scan_files::files() const
+{
+  std::vector<std::string> names;
+  for(const PSOR::Point_set_file_reader& r : m_readers)
+    names.push_back(r.filename());
+  return names;
+}
+
+void Scan_files::read_coordinates(std::uint64_t first, std::size_t count, std::vector<double>& xyz) const
+{
+  xyz.clear();
+  std::vector<double> part;
+  for(std::size_t f = 0; f < m_readers.size() && count > 0; ++f) {
+    if(first >= m_first[f + 1])
+      continue;
+    const std::size_t m = std::size_t(std::min<std::uint64_t>(count, m_first[f + 1] - first));
+    m_readers[f].read_coordinates(first - m_first[f], m, part);
+    xyz.insert(xyz.end(), part.begin(), part.end());
+    first += m, count -= m;
+  }
+}
+
+void Scan_files::read(std::uint64_t first, std::size_t count, CGAL::Point_set_3<Point_3>& points) const
+{
+  bool started = false;
+  CGAL::Point_set_3<Point_3> part;
+  for(std::size_t f = 0; f < m_readers.size() && count > 0; ++f) {
+    if(first >= m_first[f + 1])
+      continue;
+    const std::size_t m = std::size_t(std::min<std::uint64_t>(count, m_first[f + 1] - first));
+    if(!started)
+      m_readers[f].read(first - m_first[f], m, points);
+    else {
+      m_readers[f].read(first - m_first[f], m, part);
+      points.join(part);
+    }
+    started = true;
+    first += m, count -= m;
+  }
+}
+
+Recognition_in_tiles recognize_in_tiles(const Scan_files& reader, const std::string& work_dir,
                                         const PSOR::Recognize_objects_options& options, const std::string& identity,
                                         bool keep_going, const Tile_recognizer& recognize, Progress& progress)
 {
@@ -577,7 +661,7 @@ struct Piece
   std::vector<char> ground;
 };
 
-Piece read_piece(const PSOR::Point_set_file_reader& reader, const Recognition_in_tiles& m, const std::vector<int>& label,
+Piece read_piece(const Scan_files& reader, const Recognition_in_tiles& m, const std::vector<int>& label,
                  std::uint64_t first, std::size_t count)
 {
   Piece p;
@@ -608,7 +692,7 @@ void write_at(const std::string& path, std::uint64_t offset, const char* bytes, 
 } // namespace
 
 void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path,
-                                  const PSOR::Point_set_file_reader& reader, const Recognition_in_tiles& m,
+                                  const Scan_files& reader, const Recognition_in_tiles& m,
                                   const std::string& command, const std::vector<int>& label,
                                   const std::string& comment, const std::vector<std::string>& class_names,
                                   std::size_t piece)

@@ -27,6 +27,28 @@
 
 namespace shape_analysis_cli {
 
+// The scans of a run read as one, piece by piece (PSOR::Point_set_file_reader): their points one
+// after the other, the files in the order given, a folder's LAS, PLY and KITTI files (.las, .ply,
+// .bin) in the order of their names. They must have the same properties.
+class Scan_files
+{
+public:
+  // Opens them; Cli_error for a file that cannot be read in pieces, an empty folder, or files
+  // with other properties than the first's.
+  explicit Scan_files(const std::vector<std::string>& inputs);
+  std::uint64_t number_of_points() const { return m_first.back(); }
+  const std::string& filename() const { return m_readers.front().filename(); } // the first one
+  const std::string& format() const { return m_readers.front().format(); }
+  std::vector<std::string> files() const;
+  // As PSOR::Point_set_file_reader's, over the files one after the other.
+  void read_coordinates(std::uint64_t first, std::size_t count, std::vector<double>& xyz) const;
+  void read(std::uint64_t first, std::size_t count, CGAL::Point_set_3<Point_3>& points) const;
+
+private:
+  std::vector<PSOR::Point_set_file_reader> m_readers;
+  std::vector<std::uint64_t> m_first{0}; // the index of each file's first point, then the total
+};
+
 // Recognizes one tile from the points it holds (PSOR::recognize_tile() with the run's options).
 typedef std::function<PSOR::Tile_recognition(const PSOR::Tile_plan&, std::size_t, const std::vector<Point_3>&)>
   Tile_recognizer;
@@ -54,7 +76,7 @@ struct Recognition_in_tiles
 // when it and the scan are the same. Throws Cli_error on a scan it cannot read or a folder it
 // cannot write, and on a tile that fails unless `keep_going` (the tile is then left out: its own
 // points neither ground nor in an object; listed in `failed_tiles`).
-Recognition_in_tiles recognize_in_tiles(const PSOR::Point_set_file_reader& reader, const std::string& work_dir,
+Recognition_in_tiles recognize_in_tiles(const Scan_files& reader, const std::string& work_dir,
                                         const PSOR::Recognize_objects_options& options, const std::string& identity,
                                         bool keep_going, const Tile_recognizer& recognize, Progress& progress);
 
@@ -63,7 +85,7 @@ Recognition_in_tiles recognize_in_tiles(const PSOR::Point_set_file_reader& reade
 // of its part of the scan (`m.first`, `m.object`, `m.ground`; `label` as `m.object`) into the file
 // that rank 0 stages in `outputs` (collective).
 void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path,
-                                  const PSOR::Point_set_file_reader& reader, const Recognition_in_tiles& m,
+                                  const Scan_files& reader, const Recognition_in_tiles& m,
                                   const std::string& command,
                                   const std::vector<int>& label, const std::string& comment,
                                   const std::vector<std::string>& class_names, std::size_t piece = std::size_t(1) << 18);

@@ -68,6 +68,39 @@ protected:
   std::string scan, objects, locations;
 };
 
+// Writes the binary PLY `from` as `parts` files of `folder` (part0.ply, ...): the same header with
+// each part's count, the vertex records cut at `cuts`.
+void split_ply(const std::string& from, const fs::path& folder, const std::vector<std::size_t>& cuts)
+{
+  const std::string bytes = read_file(from);
+  const std::size_t end = bytes.find("end_header\n") + 11, at = bytes.find("element vertex ");
+  const std::size_t n = std::stoul(bytes.substr(at + 15)), record = (bytes.size() - end) / n;
+  const std::string count = "element vertex " + std::to_string(n) + "\n";
+  fs::create_directories(folder);
+  for(std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    std::string header = bytes.substr(0, end);
+    header.replace(at, count.size(), "element vertex " + std::to_string(cuts[k + 1] - cuts[k]) + "\n");
+    std::ofstream out(folder / ("part" + std::to_string(k) + ".ply"), std::ios::binary);
+    out << header << bytes.substr(end + cuts[k] * record, (cuts[k + 1] - cuts[k]) * record);
+  }
+}
+
+TEST_F(TilesTest, AFolderOfScansIsRecognizedAsTheirUnion)
+{
+  // The scan in three files (one of 10 points), in a folder with a file that is not a scan.
+  const std::string ply = read_file(scan);
+  const std::size_t n = std::stoul(ply.substr(ply.find("element vertex ") + 15));
+  split_ply(scan, root / "parts", {0, n / 3, n / 3 + 10, n});
+  std::ofstream(root / "parts" / "notes.txt") << "not a scan\n";
+  const fs::path dir = root / "folder";
+  std::vector<std::string> args = recognize(dir, (dir / "work").string());
+  args[2] = (root / "parts").string();
+  ASSERT_TRUE(run_tool(args));
+  EXPECT_TRUE(read_file(dir / "objects.ply") == objects);
+  EXPECT_EQ(read_file(dir / "locations.csv"), locations);
+  EXPECT_NE(read_file(dir / "report.json").find("part2.ply"), std::string::npos);
+}
+
 TEST_F(TilesTest, OutOfCoreGivesTheInMemoryBytesAndReusesFinishedTiles)
 {
   const std::string work = (root / "work").string();
