@@ -111,7 +111,8 @@ public:
   // Writes the content produced by `writer` into a temporary file for the declared `path`.
   void stage(const std::string& path, bool binary, const std::function<void(std::ostream&)>& writer);
   // The same, `writer` given the temporary file's name to write it itself (e.g. from several
-  // processes); the declared `path` must be a regular file or not exist yet.
+  // processes of one machine: for a target that is not a regular file, the temporary file is in
+  // the temporary directory).
   void stage_file(const std::string& path, const std::function<void(const std::string& temporary)>& writer);
   void commit();
 

@@ -418,10 +418,7 @@ void Output_files::stage(const std::string& path, bool binary,
 void Output_files::stage_file(const std::string& path, const std::function<void(const std::string&)>& writer)
 {
   bool special = false;
-  const std::string temporary = new_temporary(path, special);
-  if(special)
-    throw Cli_error("'" + path + "' is not a regular file: it cannot be written by several processes");
-  writer(temporary);
+  writer(new_temporary(path, special)); // (for a special target, a file of the temporary directory)
 }
 
 void Output_files::commit()

@@ -12,6 +12,7 @@
 // simulated mobile LIDAR, optionally with an airborne pass.
 
 #include "cli_common.h"
+#include "points_common.h"
 
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO/PLY.h>
@@ -19,6 +20,7 @@
 #include <CGAL/Point_set_object_recognition/locate_objects.h>
 #include <CGAL/Point_set_object_recognition/read_point_set.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
+#include <CGAL/Point_set_object_recognition/write_point_set.h>
 #ifdef CGAL_SHAPE_ANALYSIS_USE_OSMIUM
 #include <CGAL/Point_set_object_recognition/read_street_map.h>
 #include <Shape_analysis_support/Urban_osm.h>
@@ -48,6 +50,7 @@ struct Scene_options
   std::string sensor = "profile";
   // Road users and vegetation per 100 m; negative: the sensor's default (none for profile).
   double pedestrians = -1, cyclists = -1, lane_cars = -1, vegetation = -1;
+  std::size_t segment_points = 10000000; // above twice this, the street is made in segments
   std::string streets, crs = "EPSG:32618";  // the street's OpenStreetMap file, its UTM zone
   std::vector<double> scan_origin{583000, 4507000}; // the UTM coordinates of the scan's (0, 0)
   bool quiet = false, verbose = false;
@@ -74,12 +77,49 @@ Json objects_json(const std::vector<SAS::Urban_object>& objects, const std::map<
   return list;
 }
 
+// `points generate` of more than twice --segment-points points: segments of about that many.
+int run_scene_in_segments(const Scene_options& o, const SAS::Urban_scene_options& so, Output_files& outputs,
+                          Progress& progress, const Stopwatch& total)
+{
+  if(!o.streets.empty())
+    throw Usage_error("--streets: a street of more than twice --segment-points points is generated in "
+                      "segments, without a map");
+  Stopwatch work;
+  Segmented_scene g;
+  outputs.stage(o.output, true, [&](std::ostream& out) {
+    g = generate_in_segments(so, out, lower_extension(o.output) == ".las",
+                             "written by shape_analysis points " + o.command + " (CGAL Global Shape Analysis)",
+                             o.segment_points, progress);
+  });
+  const double seconds = work.seconds();
+  if(!o.objects.empty())
+    outputs.stage(o.objects, false, [&](std::ostream& out) { out << SAS::to_text(objects_json(g.objects, g.scanned)) << "\n"; });
+  if(!o.report.empty()) {
+    Json report = Json::object();
+    report["command"] = "points " + o.command;
+    report["parameters"] = {{"length", so.street_length}, {"points", so.target_points}, {"seed", so.seed},
+                            {"objects_per_100m", so.objects_per_100m}, {"noise", so.range_noise}};
+    report["segments"] = g.segments;
+    report["number_of_points"] = g.number_of_points;
+    report["object_points"] = g.object_points;
+    report["number_of_objects"] = g.objects.size();
+    report["scanned_objects"] = g.scanned.size();
+    report["number_of_triangles"] = g.triangles;
+    stage_report(outputs, o.report, report, seconds, 0.0, total.seconds(), {{"scene", o.output}, {"objects", o.objects}});
+  }
+  outputs.commit();
+  progress.done();
+  std::cout << o.output << ": " << g.number_of_points << " points (" << g.object_points << " on " << g.objects.size()
+            << " objects) in " << g.segments << " segments in " << seconds << " s\n";
+  return 0;
+}
+
 int run_scene(const Scene_options& o)
 {
   Stopwatch total;
   Progress progress("points " + o.command, o.quiet, o.verbose);
   Output_files outputs;
-  outputs.add_output(o.output, "scanned scene", {".ply"});
+  outputs.add_output(o.output, "scanned scene", {".ply", ".las"});
   if(!o.objects.empty()) {
     outputs.add_output(o.objects, "ground-truth objects", {".json"});
   }
@@ -113,13 +153,20 @@ int run_scene(const Scene_options& o)
     if(so.airborne)
       throw Usage_error("--airborne goes with --sensor profile only");
   }
-  if(!(so.street_length >= 10 && so.street_length <= 1e5))
-    throw Usage_error("--length must be between 10 and 100000 m");
+  // In segments (above twice segment_points), each segment up to 100 km.
+  if(o.segment_points < 1000)
+    throw Usage_error("--segment-points must be at least 1000");
+  const bool in_segments = so.target_points > 2 * o.segment_points && !rotating;
+  const double longest = in_segments ? 1e5 * double(so.target_points / o.segment_points + 1) : 1e5;
+  if(!(so.street_length >= 10 && so.street_length <= longest))
+    throw Usage_error("--length must be between 10 and " + std::to_string(std::size_t(longest)) + " m");
   if(so.target_points < 1000)
     throw Usage_error("--points must be at least 1000");
   if(!(so.range_noise >= 0 && so.range_noise <= 1))
     throw Usage_error("--noise must be between 0 and 1 m");
 
+  if(in_segments)
+    return run_scene_in_segments(o, so, outputs, progress, total);
   Stopwatch work;
   progress.stage("building a street of " + std::to_string(int(so.street_length)) + " m");
   const SAS::Urban_scene scene = SAS::make_urban_scene(so);
@@ -130,18 +177,10 @@ int run_scene(const Scene_options& o)
 
   progress.stage("writing " + std::to_string(scan.points.size()) + " points");
   outputs.stage(o.output, true, [&](std::ostream& out) {
-    CGAL::Point_set_3<Point_3> ps;
-    SAS::fill_point_set(scan, ps, true);
-    // Colours by class, so that MeshLab shows them; CloudCompare also shows the scalar fields.
-    auto red = ps.add_property_map<unsigned char>("red", 0).first;
-    auto green = ps.add_property_map<unsigned char>("green", 0).first;
-    auto blue = ps.add_property_map<unsigned char>("blue", 0).first;
-    auto label = ps.property_map<int>("label").first;
-    for(auto i : ps) {
-      const auto c = label_colour(std::size_t(label[i]));
-      red[i] = c[0];
-      green[i] = c[1];
-      blue[i] = c[2];
+    const CGAL::Point_set_3<Point_3> ps = scan_points(scan);
+    if(lower_extension(o.output) == ".las") {
+      PSOR::write_las_point_set(out, ps);
+      return;
     }
     CGAL::IO::set_mode(out, CGAL::IO::BINARY);
     if(!CGAL::IO::write_PLY(out, ps, "written by shape_analysis points " + o.command + " (CGAL Global Shape Analysis)"))
@@ -522,6 +561,11 @@ void add_points_command(CLI::App& app, std::function<int()>& run)
     SAS::Urban_scene_options& so = s->scene;
     scene->add_option("--length", so.street_length, "Length of the street in metres")->capture_default_str();
     scene->add_option("--points", so.target_points, "Number of mobile LIDAR points wanted (roughly)")->capture_default_str();
+    scene->add_option("--segment-points", s->segment_points,
+                      "Above twice this many points (--sensor profile), the street is made of segments of about "
+                      "this many points, each a street of its own (its own seed) after the previous one along x, "
+                      "generated and written one at a time: memory holds one segment (10^7 points: 2 GB)")
+      ->capture_default_str();
     scene->add_option("--objects-per-100m", so.objects_per_100m, "Objects per 100 m of street")->capture_default_str();
     scene->add_option("--noise", so.range_noise, "Standard deviation of the range noise in metres")->capture_default_str();
     scene->add_flag("--airborne", so.airborne, "Add an airborne pass (points on a grid from above)");

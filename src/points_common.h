@@ -13,7 +13,11 @@
 #include <CGAL/Point_set_object_recognition/read_point_set.h>
 #include <CGAL/Point_set_object_recognition/segment_objects.h>
 
+#include <Shape_analysis_support/Urban_scan.h>
+
 #include <array>
+#include <map>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -87,6 +91,24 @@ void write_objects_file(std::ostream& out, bool las, const std::string& input, c
                         const std::vector<int>& object, const std::vector<char>& ground, const std::string& command,
                         const std::vector<int>& label = {}, const std::string& comment = "",
                         const std::vector<std::string>& class_names = {});
+
+// The points of `points generate`: x y z, instance, label, intensity, colours by class
+// (scene_segments.cpp).
+CGAL::Point_set_3<Point_3> scan_points(const CGAL::Shape_analysis_support::Urban_scan& scan);
+
+// `points generate` of many points (scene_segments.cpp): the street cut into segments of about
+// `segment_points` points, each a street of its own (its own seed) placed after the previous one
+// along x, generated, scanned and written to `out` (binary PLY with `comment`, or LAS 1.4) one at
+// a time; the instances numbered on from one segment to the next. What was generated:
+struct Segmented_scene
+{
+  std::size_t segments = 0, number_of_points = 0, object_points = 0, triangles = 0;
+  std::vector<CGAL::Shape_analysis_support::Urban_object> objects; // moved and renumbered
+  std::map<int, std::size_t> scanned;                               // per instance, its points
+};
+Segmented_scene generate_in_segments(const CGAL::Shape_analysis_support::Urban_scene_options& so, std::ostream& out,
+                                     bool las, const std::string& comment, std::size_t segment_points,
+                                     Progress& progress);
 
 // The horizontal box of a scan: xmin, ymin, xmax, ymax (points_train_command.cpp).
 std::array<double, 4> horizontal_bbox(const CGAL::Point_set_3<Point_3>& points);

@@ -177,6 +177,9 @@ int run_recognize(const Recognize_options& o)
     throw Usage_error("several scans (or a folder) are recognized with --work-dir");
   if(ranks.size() > 1 && o.work_dir.empty())
     throw Usage_error("with several MPI ranks, give --work-dir (a folder that every rank sees)");
+  std::error_code special;
+  if(ranks.size() > 1 && std::filesystem::exists(o.output, special) && !std::filesystem::is_regular_file(o.output, special))
+    throw Usage_error("-o " + o.output + ": the ranks write into the output: it must be a regular file");
   if(o.keep_going && o.work_dir.empty())
     throw Usage_error("--keep-going goes with --work-dir");
   if(!o.locations.empty()) {

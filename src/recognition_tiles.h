@@ -15,6 +15,7 @@
 // options goes on from them.
 
 #include "points_common.h"
+#include "ranks.h"
 
 #include <CGAL/Point_set_object_recognition/Point_set_file_reader.h>
 #include <CGAL/Point_set_object_recognition/recognize_objects.h>
@@ -48,6 +49,22 @@ private:
   std::vector<PSOR::Point_set_file_reader> m_readers;
   std::vector<std::uint64_t> m_first{0}; // the index of each file's first point, then the total
 };
+
+// Runs `f` (no collective call inside) on every rank, then throws on every rank the error of the
+// lowest rank that failed, if any.
+template <typename F>
+void together(const Ranks& ranks, const F& f)
+{
+  std::string error;
+  try {
+    f();
+  } catch(const std::exception& e) {
+    error = e.what();
+  }
+  error = ranks.first_error(error);
+  if(!error.empty())
+    throw Cli_error(error);
+}
 
 // Recognizes one tile from the points it holds (PSOR::recognize_tile() with the run's options).
 typedef std::function<PSOR::Tile_recognition(const PSOR::Tile_plan&, std::size_t, const std::vector<Point_3>&)>

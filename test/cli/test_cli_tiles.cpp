@@ -195,6 +195,51 @@ TEST_F(TilesTest, KeepGoingLeavesOutAFailingTileAndTheNextRunDoesIt)
   EXPECT_EQ(report_number(read_file(dir / "report.json"), "tiles_reused"), finished - 1);
 }
 
+// `points generate` above twice --segment-points: segments, each a street of its own after the
+// previous one, written one at a time into one PLY or LAS file; the same bytes for the same seed.
+TEST(Generator, ManyPointsAreWrittenSegmentBySegment)
+{
+  const fs::path root = fs::temp_directory_path() / ("shape_analysis_segments_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root);
+  const auto generate = [&](const std::string& name) {
+    return std::vector<std::string>{"points", "generate", "--points", "60000", "--length", "90", "--segment-points",
+                                    "20000", "--seed", "2", "-q", "-o", (root / name).string(), "--truth",
+                                    (root / (name + ".json")).string(), "--report", (root / (name + ".report.json")).string()};
+  };
+  ASSERT_TRUE(run_tool(generate("a.ply")));
+  ASSERT_TRUE(run_tool(generate("b.ply")));
+  ASSERT_TRUE(run_tool(generate("c.las")));
+  const std::string report = read_file(root / "a.ply.report.json");
+  EXPECT_EQ(report_number(report, "segments"), 3);
+  const long n = report_number(report, "number_of_points");
+  EXPECT_GT(n, 50000);
+  EXPECT_LT(n, 70000);
+  const std::string ply = read_file(root / "a.ply");
+  EXPECT_TRUE(ply == read_file(root / "b.ply"));
+  // The header announces the whole (its count padded with spaces), 39 bytes per vertex follow.
+  const std::size_t at = ply.find("element vertex "), end = ply.find("end_header\n") + 11;
+  EXPECT_EQ(std::stol(ply.substr(at + 15)), n);
+  EXPECT_EQ(ply.size() - end, std::size_t(n) * 39);
+  // The truth: ids 1 to the number of objects, each once, along the three segments.
+  const std::string truth = read_file(root / "a.ply.json");
+  const long objects = report_number(report, "number_of_objects");
+  EXPECT_GT(objects, 20);
+  for(long id : {1L, objects})
+    EXPECT_NE(truth.find("\"id\": " + std::to_string(id) + ","), std::string::npos) << id;
+  EXPECT_EQ(truth.find("\"id\": " + std::to_string(objects + 1) + ","), std::string::npos);
+  // Both files read back (piece by piece) with every point, and their objects found.
+  for(const std::string name : {"a.ply", "c.las"}) {
+    const std::string out = (root / (name + ".objects.ply")).string(), r = (root / (name + ".r.json")).string();
+    ASSERT_TRUE(run_tool({"points", "recognize", (root / name).string(), "-q", "-o", out, "--report", r,
+                          "--work-dir", (root / (name + ".work")).string()}))
+      << name;
+    EXPECT_EQ(report_number(read_file(r), "number_of_points"), n) << name;
+    EXPECT_NE(read_file(r).find("\"location\""), std::string::npos) << name;
+  }
+  fs::remove_all(root);
+}
+
 #ifdef SHAPE_ANALYSIS_MPIRUN
 
 // The arguments of `mpirun -np ranks` running the tool with `args`, one thread per rank.

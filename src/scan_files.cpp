@@ -1,0 +1,98 @@
+// Copyright (c) 2026 CGAL Global Shape Analysis contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The scans of a run read as one, piece by piece (recognition_tiles.h, Scan_files).
+
+#include "recognition_tiles.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <typeindex>
+
+namespace shape_analysis_cli {
+
+namespace fs = std::filesystem;
+
+Scan_files::Scan_files(const std::vector<std::string>& inputs)
+{
+  std::vector<std::string> files;
+  for(const std::string& input : inputs) {
+    std::error_code ec;
+    if(!fs::is_directory(input, ec)) {
+      files.push_back(input);
+      continue;
+    }
+    std::vector<std::string> found;
+    for(const auto& entry : fs::directory_iterator(input, ec)) {
+      const std::string e = lower_extension(entry.path().string());
+      if(entry.is_regular_file(ec) && (e == ".las" || e == ".ply" || e == ".bin"))
+        found.push_back(entry.path().string());
+    }
+    if(found.empty())
+      throw Cli_error(input + ": a folder without .las, .ply or .bin files");
+    std::sort(found.begin(), found.end());
+    files.insert(files.end(), found.begin(), found.end());
+  }
+  std::vector<std::pair<std::string, std::type_index>> layout;
+  for(const std::string& file : files) {
+    try {
+      m_readers.emplace_back(file);
+      CGAL::Point_set_3<Point_3> one;
+      m_readers.back().read(0, 1, one);
+      for(const std::string& name : one.properties())
+        if(name == "object" || name == "ground")
+          throw Cli_error(file + " already has an 'object' or a 'ground' property");
+      const auto properties = one.properties_and_types();
+      if(m_readers.size() == 1)
+        layout = properties;
+      else if(properties != layout)
+        throw Cli_error(file + " has other properties than " + files.front() + " (the scans of a run must have the same)");
+    } catch(const CGAL::Shape_analysis::Bad_input& e) {
+      throw Cli_error(std::string(e.what()) + " (--work-dir reads LAS, binary PLY and KITTI scans)");
+    }
+    m_first.push_back(m_first.back() + m_readers.back().number_of_points());
+  }
+}
+
+std::vector<std::string> Scan_files::files() const
+{
+  std::vector<std::string> names;
+  for(const PSOR::Point_set_file_reader& r : m_readers)
+    names.push_back(r.filename());
+  return names;
+}
+
+void Scan_files::read_coordinates(std::uint64_t first, std::size_t count, std::vector<double>& xyz) const
+{
+  xyz.clear();
+  std::vector<double> part;
+  for(std::size_t f = 0; f < m_readers.size() && count > 0; ++f) {
+    if(first >= m_first[f + 1])
+      continue;
+    const std::size_t m = std::size_t(std::min<std::uint64_t>(count, m_first[f + 1] - first));
+    m_readers[f].read_coordinates(first - m_first[f], m, part);
+    xyz.insert(xyz.end(), part.begin(), part.end());
+    first += m, count -= m;
+  }
+}
+
+void Scan_files::read(std::uint64_t first, std::size_t count, CGAL::Point_set_3<Point_3>& points) const
+{
+  bool started = false;
+  CGAL::Point_set_3<Point_3> part;
+  for(std::size_t f = 0; f < m_readers.size() && count > 0; ++f) {
+    if(first >= m_first[f + 1])
+      continue;
+    const std::size_t m = std::size_t(std::min<std::uint64_t>(count, m_first[f + 1] - first));
+    if(!started)
+      m_readers[f].read(first - m_first[f], m, points);
+    else {
+      m_readers[f].read(first - m_first[f], m, part);
+      points.join(part);
+    }
+    started = true;
+    first += m, count -= m;
+  }
+}
+
+} // namespace shape_analysis_cli
