@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <mutex>
 #include <sstream>
 
 namespace shape_analysis_cli {
@@ -58,13 +59,87 @@ void write_at(const std::string& path, std::uint64_t offset, const char* bytes, 
     throw Cli_error("error while writing '" + path + "' (disk full?)");
 }
 
+// The vertex properties ("type name") of the PLY header `text`.
+std::vector<std::string> vertex_properties(const std::string& text)
+{
+  std::vector<std::string> properties;
+  std::istringstream in(text);
+  std::string line;
+  bool vertex = false;
+  while(std::getline(in, line) && line.rfind("end_header", 0) != 0) {
+    if(line.rfind("element ", 0) == 0)
+      vertex = line.rfind("element vertex ", 0) == 0;
+    else if(vertex && line.rfind("property ", 0) == 0)
+      properties.push_back(line.substr(9));
+  }
+  return properties;
+}
+
+// The PLY records of the output made from the scan's own records: each followed by the values of
+// `suffix` (the output's properties after the scan's: object, ground, label, colours).
+class Ply_records_from_scan
+{
+public:
+  // Whether the output (its header `output`) extends the scan's records (`scan`: the scan's header).
+  bool prepare(const std::string& scan, const std::string& output)
+  {
+    const std::vector<std::string> in = vertex_properties(scan), out = vertex_properties(output);
+    if(in.empty() || out.size() <= in.size() || !std::equal(in.begin(), in.end(), out.begin()))
+      return false;
+    m_suffix.assign(out.begin() + std::ptrdiff_t(in.size()), out.end());
+    for(const std::string& p : m_suffix)
+      if(p != "int object" && p != "uchar ground" && p != "int label" && p != "uchar red" && p != "uchar green" &&
+         p != "uchar blue")
+        return false;
+    return true;
+  }
+  // The output's records of the scan's `records` (`record` bytes each) and the piece's values.
+  std::string records(const std::vector<unsigned char>& records, std::size_t record, const Piece& p) const
+  {
+    std::string bytes;
+    const std::size_t count = p.object.size();
+    bytes.reserve(count * (record + 4 * m_suffix.size()));
+    for(std::size_t k = 0; k < count; ++k) {
+      bytes.append(reinterpret_cast<const char*>(records.data() + k * record), record);
+      const int by = p.label.empty() ? p.object[k] : p.label[k]; // colours as objects_point_set() gives them
+      const auto rgb = by < 0 ? std::array<unsigned char, 3>{{160, 160, 160}} : label_colour(std::size_t(by) + 1);
+      for(const std::string& s : m_suffix) {
+        if(s == "int object" || s == "int label") {
+          const std::int32_t v = s == "int object" ? p.object[k] : p.label[k];
+          bytes.append(reinterpret_cast<const char*>(&v), 4);
+        } else if(s == "uchar ground")
+          bytes.push_back(char(p.ground[k] ? 1 : 0));
+        else
+          bytes.push_back(char(rgb[s == "uchar red" ? 0 : s == "uchar green" ? 1 : 2]));
+      }
+    }
+    return bytes;
+  }
+
+private:
+  std::vector<std::string> m_suffix;
+};
+
+// The first `end` bytes of the file `path`, up to its PLY header's end.
+std::string ply_header_of(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string text, line;
+  while(std::getline(in, line)) {
+    text += line + "\n";
+    if(line.rfind("end_header", 0) == 0)
+      break;
+  }
+  return text;
+}
+
 } // namespace
 
 void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path,
                                   const Scan_files& reader, const Recognition_in_tiles& m,
                                   const std::string& command, const std::vector<int>& label,
                                   const std::string& comment, const std::vector<std::string>& class_names,
-                                  std::size_t piece)
+                                  std::size_t threads, std::size_t piece)
 {
   const Ranks& ranks = Ranks::world();
   const std::uint64_t n = reader.number_of_points(), last = m.first + m.object.size();
@@ -107,29 +182,67 @@ void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path
       });
   });
   temporary = ranks.broadcast(temporary);
-  // Each rank its own records, in place.
+  // Each rank its own records, in place, with its threads, each a part of the rank's points. A PLY
+  // output of a PLY scan that it extends is made from the scan's records once the first piece
+  // shows it is the same.
   PSOR::Las_point_set_pieces<Point_3>::Summary summary;
+  Ply_records_from_scan fast;
+  bool from_scan = false;
   together(ranks, [&]() {
-    for(std::uint64_t first = m.first; first < last; first += piece) {
-      const std::size_t count = std::size_t(std::min<std::uint64_t>(piece, last - first));
-      const Piece p = read_piece(reader, m, label, first, count);
-      if(las) {
-        std::vector<unsigned char> bytes;
-        try {
-          summary.merge(las_pieces->records(
-            objects_las_points(reader.filename(), p.points, p.object, p.ground, p.label, class_names, names), bytes));
-        } catch(const CGAL::Shape_analysis::Bad_input& e) {
-          throw Cli_error(e.what());
+    if(las || m.object.empty())
+      return;
+    std::vector<unsigned char> records;
+    const std::size_t count = std::size_t(std::min<std::uint64_t>(piece, last - m.first));
+    const Piece p = read_piece(reader, m, label, m.first, count);
+    const std::string slow = ply_bytes(p);
+    from_scan = fast.prepare(ply_header_of(reader.filename()), slow) && reader.read_ply_records(m.first, count, records) &&
+                fast.records(records, reader.record_length(), p) == slow.substr(slow.find("end_header\n") + 11);
+  });
+  together(ranks, [&]() {
+    std::mutex mutex;
+    const std::size_t parts = std::max<std::size_t>(1, threads);
+    std::vector<std::string> errors(parts);
+    const auto part_first = [&](std::size_t j) { return m.first + (last - m.first) * j / parts; };
+    const auto write_part = [&](std::size_t j) {
+      for(std::uint64_t first = part_first(j); first < part_first(j + 1); first += piece) {
+        const std::size_t count = std::size_t(std::min<std::uint64_t>(piece, part_first(j + 1) - first));
+        const Piece p = read_piece(reader, m, label, first, count);
+        if(las) {
+          std::vector<unsigned char> bytes;
+          PSOR::Las_point_set_pieces<Point_3>::Summary s;
+          try {
+            s = las_pieces->records(
+              objects_las_points(reader.filename(), p.points, p.object, p.ground, p.label, class_names, names), bytes);
+          } catch(const CGAL::Shape_analysis::Bad_input& e) {
+            throw Cli_error(e.what());
+          }
+          write_at(temporary, header.size() + first * record, reinterpret_cast<const char*>(bytes.data()), bytes.size());
+          std::lock_guard<std::mutex> lock(mutex);
+          summary.merge(s);
+        } else if(from_scan) {
+          std::vector<unsigned char> records;
+          reader.read_ply_records(first, count, records);
+          const std::string bytes = fast.records(records, reader.record_length(), p);
+          write_at(temporary, header.size() + first * record, bytes.data(), bytes.size());
+        } else {
+          const std::string bytes = ply_bytes(p);
+          const std::size_t end = bytes.find("end_header\n") + 11;
+          if(bytes.size() - end != count * record)
+            throw Cli_error("cannot write '" + path + "': records of different sizes");
+          write_at(temporary, header.size() + first * record, bytes.data() + end, bytes.size() - end);
         }
-        write_at(temporary, header.size() + first * record, reinterpret_cast<const char*>(bytes.data()), bytes.size());
-      } else {
-        const std::string bytes = ply_bytes(p);
-        const std::size_t end = bytes.find("end_header\n") + 11;
-        if(bytes.size() - end != count * record)
-          throw Cli_error("cannot write '" + path + "': records of different sizes");
-        write_at(temporary, header.size() + first * record, bytes.data() + end, bytes.size() - end);
       }
-    }
+    };
+    run_parts(parts, [&](std::size_t j) {
+      try {
+        write_part(j);
+      } catch(const std::exception& e) {
+        errors[j] = e.what();
+      }
+    });
+    for(const std::string& e : errors)
+      if(!e.empty())
+        throw Cli_error(e);
   });
   if(!las)
     return;

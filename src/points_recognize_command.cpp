@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <thread>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -291,7 +292,9 @@ int run_recognize(const Recognize_options& o)
       class_names.push_back(model->class_name(c));
   if(reader)
     stage_objects_file_in_pieces(outputs, o.output, *reader, tiled, "points recognize", label,
-                                 model ? model->label_comment() : std::string(), class_names);
+                                 model ? model->label_comment() : std::string(), class_names,
+                                 ro.number_of_threads > 0 ? ro.number_of_threads
+                                                          : std::max(1u, std::thread::hardware_concurrency()));
   else
     stage_objects_file(outputs, o.output, o.input, points, object, ground, "points recognize", label,
                        model ? model->label_comment() : std::string(), class_names);

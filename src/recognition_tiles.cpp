@@ -28,6 +28,7 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <thread>
 #include <typeindex>
 #include <sstream>
 #include <unordered_map>
@@ -116,26 +117,72 @@ void for_each_piece(const Scan_files& reader, std::uint64_t begin, std::uint64_t
   }
 }
 
-// The plan of the scan and each tile's points in `points/<tile>.<rank>`, from two passes of every
-// rank over its part of the scan.
-PSOR::Tile_plan index_scan(const Scan_files& reader, const fs::path& dir,
-                           const PSOR::Recognize_objects_options& o, std::uint64_t begin, std::uint64_t end,
-                           std::array<double, 3>& lowest, Progress& progress)
+// The records of part `part` waiting to be appended to the tiles' point files (flushed to
+// `points/<tile>.<part>` when they pass a budget).
+class Tile_records
+{
+public:
+  Tile_records(const fs::path& dir, std::size_t part) : m_dir(dir), m_part("." + std::to_string(part)) {}
+  void add(std::size_t t, std::uint64_t index, const double* xyz)
+  {
+    if(t != m_last_tile || !m_last) // consecutive points mostly fall in the same tile
+      m_last = &m_waiting[t], m_last_tile = t;
+    m_last->append(reinterpret_cast<const char*>(&index), 8);
+    m_last->append(reinterpret_cast<const char*>(xyz), 24);
+    if((m_bytes += 32) > (std::size_t(32) << 20))
+      flush();
+  }
+  void flush()
+  {
+    for(auto& w : m_waiting) {
+      const fs::path file = m_dir / "points" / (std::to_string(w.first) + m_part);
+      std::ofstream out(file, std::ios::binary | std::ios::app);
+      if(!out.write(w.second.data(), std::streamsize(w.second.size())) || !out.flush())
+        throw Cli_error("cannot write " + file.string() + " (disk full?)");
+    }
+    m_waiting.clear();
+    m_last = nullptr;
+    m_bytes = 0;
+  }
+
+private:
+  fs::path m_dir;
+  std::string m_part;
+  std::unordered_map<std::size_t, std::string> m_waiting;
+  std::string* m_last = nullptr;
+  std::size_t m_last_tile = 0, m_bytes = 0;
+};
+
+// The plan of the scan and each tile's points in `points/<tile>.<part>`, from two passes over the
+// scan: the points [begin, end) of this rank cut into `parts` parts, each read by a thread of its
+// own; part j of rank r is part r * parts + j of the files (their order is the scan's).
+PSOR::Tile_plan index_scan(const Scan_files& reader, const fs::path& dir, const PSOR::Recognize_objects_options& o,
+                           std::uint64_t begin, std::uint64_t end, std::size_t parts, std::array<double, 3>& lowest,
+                           Progress& progress)
 {
   const Ranks& ranks = Ranks::world();
+  const auto first_of = [&](std::size_t j) { return begin + (end - begin) * j / parts; };
   progress.stage("indexing " + reader.filename() + ": its box");
-  std::vector<double> lo(3, 1e300), hi(3, -1e300);
+  std::vector<std::vector<double>> part_lo(parts, std::vector<double>(3, 1e300)), part_hi(parts, std::vector<double>(3, -1e300));
   together(ranks, [&]() {
-    for_each_piece(reader, begin, end, [&](std::uint64_t first, const std::vector<double>& xyz) {
-      for(std::size_t k = 0; k < xyz.size(); k += 3) {
-        if(!std::isfinite(xyz[k]) || !std::isfinite(xyz[k + 1]) || !std::isfinite(xyz[k + 2]))
-          throw Cli_error(reader.filename() + ": point " + std::to_string(first + k / 3) +
-                          " has a coordinate that is not finite");
-        for(int c = 0; c < 3; ++c)
-          lo[c] = std::min(lo[c], xyz[k + c]), hi[c] = std::max(hi[c], xyz[k + c]);
-      }
+    run_parts(parts, [&](std::size_t j) {
+      for_each_piece(reader, first_of(j), first_of(j + 1), [&](std::uint64_t first, const std::vector<double>& xyz) {
+        std::vector<double>& lo = part_lo[j];
+        std::vector<double>& hi = part_hi[j];
+        for(std::size_t k = 0; k < xyz.size(); k += 3) {
+          if(!std::isfinite(xyz[k]) || !std::isfinite(xyz[k + 1]) || !std::isfinite(xyz[k + 2]))
+            throw Cli_error(reader.filename() + ": point " + std::to_string(first + k / 3) +
+                            " has a coordinate that is not finite");
+          for(int c = 0; c < 3; ++c)
+            lo[c] = std::min(lo[c], xyz[k + c]), hi[c] = std::max(hi[c], xyz[k + c]);
+        }
+      });
     });
   });
+  std::vector<double> lo(3, 1e300), hi(3, -1e300);
+  for(std::size_t j = 0; j < parts; ++j)
+    for(int c = 0; c < 3; ++c)
+      lo[c] = std::min(lo[c], part_lo[j][c]), hi[c] = std::max(hi[c], part_hi[j][c]);
   ranks.min_max(lo, hi);
   lowest = {{lo[0], lo[1], lo[2]}};
   PSOR::Tile_plan plan;
@@ -150,39 +197,26 @@ PSOR::Tile_plan index_scan(const Scan_files& reader, const fs::path& dir,
   });
 
   progress.stage("indexing " + reader.filename() + ": the points of each tile");
-  const std::string part = "." + std::to_string(ranks.rank());
+  std::vector<std::uint64_t> counts(plan.number_of_tiles(), 0);
+  std::mutex mutex;
   together(ranks, [&]() {
-    // Per tile, its records waiting to be appended to its file (flushed when they pass a budget).
-    std::unordered_map<std::size_t, std::string> waiting;
-    std::size_t waiting_bytes = 0;
-    const auto flush = [&]() {
-      for(auto& w : waiting) {
-        const fs::path file = dir / "points" / (std::to_string(w.first) + part);
-        std::ofstream out(file, std::ios::binary | std::ios::app);
-        if(!out.write(w.second.data(), std::streamsize(w.second.size())) || !out.flush())
-          throw Cli_error("cannot write " + file.string() + " (disk full?)");
-      }
-      waiting.clear();
-      waiting_bytes = 0;
-    };
-    for_each_piece(reader, begin, end, [&](std::uint64_t first, const std::vector<double>& xyz) {
-      for(std::size_t k = 0; k < xyz.size(); k += 3) {
-        plan.add_point(xyz[k], xyz[k + 1]);
-        const std::uint64_t index = first + k / 3;
-        plan.for_each_tile_holding(xyz[k], xyz[k + 1], [&](std::size_t t) {
-          std::string& w = waiting[t];
-          w.append(reinterpret_cast<const char*>(&index), 8);
-          w.append(reinterpret_cast<const char*>(&xyz[k]), 24);
-          waiting_bytes += 32;
-        });
-      }
-      progress.fraction(double(first + xyz.size() / 3 - begin) / double(std::max<std::uint64_t>(end - begin, 1)));
-      if(waiting_bytes > (std::size_t(64) << 20))
-        flush();
+    run_parts(parts, [&](std::size_t j) {
+      std::vector<std::uint64_t> own(plan.number_of_tiles(), 0);
+      Tile_records records(dir, std::size_t(ranks.rank()) * parts + j);
+      for_each_piece(reader, first_of(j), first_of(j + 1), [&](std::uint64_t first, const std::vector<double>& xyz) {
+        for(std::size_t k = 0; k < xyz.size(); k += 3) {
+          ++own[plan.tile_of(xyz[k], xyz[k + 1])];
+          plan.for_each_tile_holding(xyz[k], xyz[k + 1], [&](std::size_t t) { records.add(t, first + k / 3, &xyz[k]); });
+        }
+        if(j == 0)
+          progress.fraction(double(first + xyz.size() / 3 - first_of(0)) / double(std::max<std::uint64_t>(first_of(1) - first_of(0), 1)));
+      });
+      records.flush();
+      std::lock_guard<std::mutex> lock(mutex);
+      for(std::size_t t = 0; t < own.size(); ++t)
+        counts[t] += own[t];
     });
-    flush();
   });
-  std::vector<std::uint64_t> counts(plan.number_of_points.begin(), plan.number_of_points.end());
   ranks.sum(counts);
   plan.number_of_points.assign(counts.begin(), counts.end());
   return plan;
@@ -492,9 +526,12 @@ Recognition_in_tiles recognize_in_tiles(const Scan_files& reader, const std::str
   });
   text = ranks.broadcast(text);
   PSOR::Tile_plan plan;
-  int parts = ranks.size();
+  // The points' files: a part per thread of each rank (rank 0's number of threads for all).
+  const std::size_t parts_per_rank = std::size_t(std::stoul(ranks.broadcast(std::to_string(
+    options.number_of_threads > 0 ? options.number_of_threads : std::max(1u, std::thread::hardware_concurrency())))));
+  int parts = ranks.size() * int(parts_per_rank);
   if(!read_plan(text, key, options, plan, parts, m.lowest)) { // a new plan: the tiles done before are not for it
-    parts = ranks.size();
+    parts = ranks.size() * int(parts_per_rank);
     together(ranks, [&]() {
       std::error_code ec;
       if(ranks.rank() == 0) {
@@ -502,7 +539,7 @@ Recognition_in_tiles recognize_in_tiles(const Scan_files& reader, const std::str
         fs::remove_all(dir / "tiles", ec);
       }
     });
-    plan = index_scan(reader, dir, options, m.first, last, m.lowest, progress);
+    plan = index_scan(reader, dir, options, m.first, last, parts_per_rank, m.lowest, progress);
     together(ranks, [&]() {
       if(ranks.rank() == 0)
         write_whole_file(dir / "plan", plan_text(key, plan, parts, m.lowest));

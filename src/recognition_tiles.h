@@ -20,6 +20,12 @@
 #include <CGAL/Point_set_object_recognition/Point_set_file_reader.h>
 #include <CGAL/Point_set_object_recognition/recognize_objects.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
+
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -44,8 +50,25 @@ public:
   // As PSOR::Point_set_file_reader's, over the files one after the other.
   void read_coordinates(std::uint64_t first, std::size_t count, std::vector<double>& xyz) const;
   void read(std::uint64_t first, std::size_t count, CGAL::Point_set_3<Point_3>& points) const;
+  // The records as stored, when every file is a PLY file with the same vertex records (else false).
+  bool read_ply_records(std::uint64_t first, std::size_t count, std::vector<unsigned char>& bytes) const;
+  std::size_t record_length() const { return m_readers.front().record_length(); }
 
 private:
+  // Calls f(reader, its first point, count) for the parts of the points [first, first + count)
+  // in each file, in order.
+  template <typename F>
+  void for_each_file(std::uint64_t first, std::size_t count, const F& f) const
+  {
+    for(std::size_t k = 0; k < m_readers.size() && count > 0; ++k) {
+      if(first >= m_first[k + 1])
+        continue;
+      const std::size_t m = std::size_t(std::min<std::uint64_t>(count, m_first[k + 1] - first));
+      f(m_readers[k], first - m_first[k], m);
+      first += m, count -= m;
+    }
+  }
+
   std::vector<PSOR::Point_set_file_reader> m_readers;
   std::vector<std::uint64_t> m_first{0}; // the index of each file's first point, then the total
 };
@@ -64,6 +87,21 @@ void together(const Ranks& ranks, const F& f)
   error = ranks.first_error(error);
   if(!error.empty())
     throw Cli_error(error);
+}
+
+// Runs body(j) for j in [0, parts), each on a thread of its own (one after the other without TBB).
+template <typename Body>
+void run_parts(std::size_t parts, const Body& body)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(parts > 1) {
+    tbb::task_arena arena{int(parts)};
+    arena.execute([&]() { tbb::parallel_for(std::size_t(0), parts, std::size_t(1), [&](std::size_t j) { body(j); }); });
+    return;
+  }
+#endif
+  for(std::size_t j = 0; j < parts; ++j)
+    body(j);
 }
 
 // Recognizes one tile from the points it holds (PSOR::recognize_tile() with the run's options).
@@ -97,15 +135,17 @@ Recognition_in_tiles recognize_in_tiles(const Scan_files& reader, const std::str
                                         const PSOR::Recognize_objects_options& options, const std::string& identity,
                                         bool keep_going, const Tile_recognizer& recognize, Progress& progress);
 
-// Stages the segmented points of a scan read piece by piece as PLY (stage_objects_file()'s
-// content, the same bytes), one piece of `piece` points at a time, each rank writing the records
-// of its part of the scan (`m.first`, `m.object`, `m.ground`; `label` as `m.object`) into the file
-// that rank 0 stages in `outputs` (collective).
+// Stages the segmented points of a scan read piece by piece as PLY or LAS (stage_objects_file()'s
+// content, the same bytes), pieces of `piece` points, each rank writing the records of its part of
+// the scan (`m.first`, `m.object`, `m.ground`; `label` as `m.object`) into the file that rank 0
+// stages in `outputs`, with `threads` threads (collective). A PLY output of a binary PLY scan
+// whose records it extends is written from the scan's records (checked on the first piece).
 void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path,
                                   const Scan_files& reader, const Recognition_in_tiles& m,
                                   const std::string& command,
                                   const std::vector<int>& label, const std::string& comment,
-                                  const std::vector<std::string>& class_names, std::size_t piece = std::size_t(1) << 18);
+                                  const std::vector<std::string>& class_names, std::size_t threads,
+                                  std::size_t piece = std::size_t(1) << 18);
 
 } // namespace shape_analysis_cli
 

@@ -66,33 +66,39 @@ void Scan_files::read_coordinates(std::uint64_t first, std::size_t count, std::v
 {
   xyz.clear();
   std::vector<double> part;
-  for(std::size_t f = 0; f < m_readers.size() && count > 0; ++f) {
-    if(first >= m_first[f + 1])
-      continue;
-    const std::size_t m = std::size_t(std::min<std::uint64_t>(count, m_first[f + 1] - first));
-    m_readers[f].read_coordinates(first - m_first[f], m, part);
+  for_each_file(first, count, [&](const PSOR::Point_set_file_reader& r, std::uint64_t from, std::size_t m) {
+    r.read_coordinates(from, m, part);
     xyz.insert(xyz.end(), part.begin(), part.end());
-    first += m, count -= m;
-  }
+  });
 }
 
 void Scan_files::read(std::uint64_t first, std::size_t count, CGAL::Point_set_3<Point_3>& points) const
 {
   bool started = false;
   CGAL::Point_set_3<Point_3> part;
-  for(std::size_t f = 0; f < m_readers.size() && count > 0; ++f) {
-    if(first >= m_first[f + 1])
-      continue;
-    const std::size_t m = std::size_t(std::min<std::uint64_t>(count, m_first[f + 1] - first));
+  for_each_file(first, count, [&](const PSOR::Point_set_file_reader& r, std::uint64_t from, std::size_t m) {
     if(!started)
-      m_readers[f].read(first - m_first[f], m, points);
+      r.read(from, m, points);
     else {
-      m_readers[f].read(first - m_first[f], m, part);
+      r.read(from, m, part);
       points.join(part);
     }
     started = true;
-    first += m, count -= m;
-  }
+  });
+}
+
+bool Scan_files::read_ply_records(std::uint64_t first, std::size_t count, std::vector<unsigned char>& bytes) const
+{
+  for(const PSOR::Point_set_file_reader& r : m_readers)
+    if(r.format() != "ply" || r.record_length() != record_length())
+      return false;
+  bytes.clear();
+  std::vector<unsigned char> part;
+  for_each_file(first, count, [&](const PSOR::Point_set_file_reader& r, std::uint64_t from, std::size_t m) {
+    r.read_records(from, m, part);
+    bytes.insert(bytes.end(), part.begin(), part.end());
+  });
+  return true;
 }
 
 } // namespace shape_analysis_cli

@@ -101,10 +101,24 @@ public:
   void read_coordinates(std::uint64_t first, std::size_t count, std::vector<double>& xyz) const
   {
     std::vector<unsigned char> buffer;
-    read_records(first, count, buffer);
+    read_raw(first, count, buffer);
     xyz.resize(3 * count);
     for(std::size_t k = 0; k < count; ++k)
       decode_point(buffer.data() + k * m_record, &xyz[3 * k]);
+  }
+
+  /// \returns the size in bytes of a point's record in the file
+  std::size_t record_length() const { return m_record; }
+
+  /// Reads the records of the points `first` to `first + count - 1` as the file stores them (for
+  /// a PLY file, the vertex element's bytes) into `bytes` (replaced).
+  /// \param first the first point
+  /// \param count the number of points
+  /// \param bytes the records, `count * record_length()` bytes
+  /// \throws CGAL::Shape_analysis::Bad_input as `read_coordinates()`
+  void read_records(std::uint64_t first, std::size_t count, std::vector<unsigned char>& bytes) const
+  {
+    read_raw(first, count, bytes);
   }
 
   /// Reads the points `first` to `first + count - 1` with their properties into `points`
@@ -122,7 +136,7 @@ public:
             const std::array<double, 3>& origin = {{0, 0, 0}}) const
   {
     std::vector<unsigned char> buffer;
-    read_records(first, count, buffer);
+    read_raw(first, count, buffer);
     points.clear();
     std::vector<double> xyz(3 * count);
     for(std::size_t k = 0; k < count; ++k)
@@ -148,7 +162,7 @@ private:
     std::size_t offset;
   };
 
-  void read_records(std::uint64_t first, std::size_t count, std::vector<unsigned char>& buffer) const
+  void read_raw(std::uint64_t first, std::size_t count, std::vector<unsigned char>& buffer) const
   {
     if(first > m_count || count > m_count - first)
       throw Bad_input(m_filename + ": points " + std::to_string(first) + " to " + std::to_string(first + count) +
