@@ -96,21 +96,35 @@ public:
   // The output's records of the scan's `records` (`record` bytes each) and the piece's values.
   std::string records(const std::vector<unsigned char>& records, std::size_t record, const Piece& p) const
   {
+    enum { OBJECT, GROUND, LABEL, RED, GREEN, BLUE };
+    std::vector<int> codes;
+    for(const std::string& s : m_suffix)
+      codes.push_back(s == "int object" ? OBJECT : s == "uchar ground" ? GROUND : s == "int label" ? LABEL
+                      : s == "uchar red" ? RED : s == "uchar green" ? GREEN : BLUE);
+    std::vector<std::array<unsigned char, 3>> colours; // per object (or class) + 1, as objects_point_set() gives them
+    const auto colour = [&](int by) -> const std::array<unsigned char, 3>& {
+      if(std::size_t(by + 1) >= colours.size()) {
+        const std::size_t from = colours.size();
+        colours.resize(std::size_t(by + 2));
+        for(std::size_t c = from; c < colours.size(); ++c)
+          colours[c] = c == 0 ? std::array<unsigned char, 3>{{160, 160, 160}} : label_colour(c);
+      }
+      return colours[std::size_t(by + 1)];
+    };
     std::string bytes;
     const std::size_t count = p.object.size();
-    bytes.reserve(count * (record + 4 * m_suffix.size()));
+    bytes.reserve(count * (record + 4 * codes.size()));
     for(std::size_t k = 0; k < count; ++k) {
       bytes.append(reinterpret_cast<const char*>(records.data() + k * record), record);
-      const int by = p.label.empty() ? p.object[k] : p.label[k]; // colours as objects_point_set() gives them
-      const auto rgb = by < 0 ? std::array<unsigned char, 3>{{160, 160, 160}} : label_colour(std::size_t(by) + 1);
-      for(const std::string& s : m_suffix) {
-        if(s == "int object" || s == "int label") {
-          const std::int32_t v = s == "int object" ? p.object[k] : p.label[k];
+      const int by = p.label.empty() ? p.object[k] : p.label[k];
+      for(int code : codes) {
+        if(code == OBJECT || code == LABEL) {
+          const std::int32_t v = code == OBJECT ? p.object[k] : p.label[k];
           bytes.append(reinterpret_cast<const char*>(&v), 4);
-        } else if(s == "uchar ground")
+        } else if(code == GROUND)
           bytes.push_back(char(p.ground[k] ? 1 : 0));
         else
-          bytes.push_back(char(rgb[s == "uchar red" ? 0 : s == "uchar green" ? 1 : 2]));
+          bytes.push_back(char(colour(by < 0 ? -1 : by)[std::size_t(code - RED)]));
       }
     }
     return bytes;

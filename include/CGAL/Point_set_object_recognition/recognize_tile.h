@@ -240,6 +240,14 @@ struct Tile_plan
   {
     const std::size_t own = tile_of(x, y);
     const long cx = long(own % columns), cy = long(own / columns), r = reach();
+    // Most points lie farther than the margin from their square's sides (with room for the
+    // rounding of the neighbours' sides): their tile alone holds them.
+    const double x0 = origin[0] + double(cx) * tile_size, y0 = origin[1] + double(cy) * tile_size;
+    const double room = tile_margin + 1e-9 * (std::abs(x) + std::abs(y) + tile_size);
+    if(x - x0 > room && x0 + tile_size - x > room && y - y0 > room && y0 + tile_size - y > room) {
+      f(own);
+      return;
+    }
     for(long j = (std::max)(0L, cy - r); j <= (std::min)(long(rows) - 1, cy + r); ++j)
       for(long i = (std::max)(0L, cx - r); i <= (std::min)(long(columns) - 1, cx + r); ++i) {
         const std::size_t t = std::size_t(j) * columns + std::size_t(i);
