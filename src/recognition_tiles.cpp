@@ -197,28 +197,73 @@ PSOR::Tile_plan index_scan(const Scan_files& reader, const fs::path& dir, const 
   });
 
   progress.stage("indexing " + reader.filename() + ": the points of each tile");
+  // First the runs of consecutive points each tile holds: a scan in the order of its acquisition
+  // gives few, and each tile then reads its runs from the scan itself (`points/<tile>.<part>.runs`).
+  // When a part has too many (runs of fewer than 32 points on average), every tile's points are
+  // copied instead (`points/<tile>.<part>`), in a third pass.
   std::vector<std::uint64_t> counts(plan.number_of_tiles(), 0);
+  std::vector<std::uint64_t> scattered{0};
   std::mutex mutex;
   together(ranks, [&]() {
     run_parts(parts, [&](std::size_t j) {
       std::vector<std::uint64_t> own(plan.number_of_tiles(), 0);
-      Tile_records records(dir, std::size_t(ranks.rank()) * parts + j);
+      std::unordered_map<std::size_t, std::vector<std::pair<std::uint64_t, std::uint64_t>>> runs;
+      std::size_t number_of_runs = 0, last_tile = 0;
+      std::vector<std::pair<std::uint64_t, std::uint64_t>>* last = nullptr;
+      const std::uint64_t budget = (first_of(j + 1) - first_of(j)) / 32 + 16;
       for_each_piece(reader, first_of(j), first_of(j + 1), [&](std::uint64_t first, const std::vector<double>& xyz) {
         for(std::size_t k = 0; k < xyz.size(); k += 3) {
           ++own[plan.tile_of(xyz[k], xyz[k + 1])];
-          plan.for_each_tile_holding(xyz[k], xyz[k + 1], [&](std::size_t t) { records.add(t, first + k / 3, &xyz[k]); });
+          const std::uint64_t i = first + k / 3;
+          plan.for_each_tile_holding(xyz[k], xyz[k + 1], [&](std::size_t t) {
+            if(number_of_runs > budget)
+              return;
+            if(t != last_tile || !last)
+              last = &runs[t], last_tile = t;
+            if(!last->empty() && last->back().second == i)
+              ++last->back().second;
+            else
+              last->emplace_back(i, i + 1), ++number_of_runs;
+          });
         }
         if(j == 0)
           progress.fraction(double(first + xyz.size() / 3 - first_of(0)) / double(std::max<std::uint64_t>(first_of(1) - first_of(0), 1)));
       });
-      records.flush();
+      const std::string part = "." + std::to_string(std::size_t(ranks.rank()) * parts + j);
+      if(number_of_runs <= budget)
+        for(const auto& r : runs) {
+          std::string bytes(reinterpret_cast<const char*>(r.second.data()), r.second.size() * 16);
+          write_whole_file(dir / "points" / (std::to_string(r.first) + part + ".runs"), bytes);
+        }
       std::lock_guard<std::mutex> lock(mutex);
+      scattered[0] += number_of_runs > budget;
       for(std::size_t t = 0; t < own.size(); ++t)
         counts[t] += own[t];
     });
   });
   ranks.sum(counts);
+  ranks.sum(scattered);
   plan.number_of_points.assign(counts.begin(), counts.end());
+  if(scattered[0] == 0)
+    return plan;
+  // Scattered points: a copy of every tile's points, part by part (the runs written are dropped).
+  progress.stage("indexing " + reader.filename() + ": copying the points of each tile");
+  together(ranks, [&]() {
+    if(ranks.rank() == 0)
+      for(const auto& entry : fs::directory_iterator(dir / "points"))
+        if(entry.path().extension() == ".runs")
+          fs::remove(entry.path());
+  });
+  together(ranks, [&]() {
+    run_parts(parts, [&](std::size_t j) {
+      Tile_records records(dir, std::size_t(ranks.rank()) * parts + j);
+      for_each_piece(reader, first_of(j), first_of(j + 1), [&](std::uint64_t first, const std::vector<double>& xyz) {
+        for(std::size_t k = 0; k < xyz.size(); k += 3)
+          plan.for_each_tile_holding(xyz[k], xyz[k + 1], [&](std::size_t t) { records.add(t, first + k / 3, &xyz[k]); });
+      });
+      records.flush();
+    });
+  });
   return plan;
 }
 
@@ -261,16 +306,35 @@ bool read_plan(const std::string& text, const std::string& key, const PSOR::Reco
   return word == "end";
 }
 
-// The points that tile t holds, from its files (one per rank that indexed, each in the scan's
-// order, rank after rank: the scan's order): their scan indices and coordinates.
-void read_tile_points(const fs::path& dir, std::size_t t, int parts, std::vector<std::uint64_t>& index,
-                      std::vector<Point_3>& points)
+// The points that tile t holds, from its files (one per part of the scan that was indexed, in the
+// scan's order): their scan indices and coordinates; a part's runs read from the scan itself.
+void read_tile_points(const Scan_files& reader, const fs::path& dir, std::size_t t, int parts,
+                      std::vector<std::uint64_t>& index, std::vector<Point_3>& points)
 {
   index.clear();
   points.clear();
+  std::vector<double> xyz;
   for(int part = 0; part < parts; ++part) {
     const fs::path file = dir / "points" / (std::to_string(t) + "." + std::to_string(part));
     std::error_code ec;
+    if(fs::exists(file.string() + ".runs", ec)) {
+      const std::string bytes = read_file(file.string() + ".runs");
+      if(bytes.size() % 16 != 0)
+        throw Cli_error(file.string() + ".runs: not whole runs (remove the work folder and run again)");
+      for(std::size_t k = 0; k < bytes.size() / 16; ++k) {
+        std::uint64_t run[2];
+        std::memcpy(run, bytes.data() + 16 * k, 16);
+        if(run[1] <= run[0] || run[1] > reader.number_of_points())
+          throw Cli_error(file.string() + ".runs: a run beyond the scan (remove the work folder and run again)");
+        reader.read_coordinates(run[0], std::size_t(run[1] - run[0]), xyz);
+        for(std::uint64_t i = run[0]; i < run[1]; ++i) {
+          const double* p = &xyz[3 * (i - run[0])];
+          index.push_back(i);
+          points.emplace_back(p[0], p[1], p[2]);
+        }
+      }
+      continue;
+    }
     if(!fs::exists(file, ec))
       continue;
     const std::string bytes = read_file(file);
@@ -278,11 +342,11 @@ void read_tile_points(const fs::path& dir, std::size_t t, int parts, std::vector
       throw Cli_error(file.string() + ": not whole point records (remove the work folder and run again)");
     for(std::size_t k = 0; k < bytes.size() / 32; ++k) {
       std::uint64_t i = 0;
-      double xyz[3];
+      double p[3];
       std::memcpy(&i, bytes.data() + 32 * k, 8);
-      std::memcpy(xyz, bytes.data() + 32 * k + 8, 24);
+      std::memcpy(p, bytes.data() + 32 * k + 8, 24);
       index.push_back(i);
-      points.emplace_back(xyz[0], xyz[1], xyz[2]);
+      points.emplace_back(p[0], p[1], p[2]);
     }
   }
 }
@@ -443,8 +507,8 @@ void on_threads(std::size_t threads, const Body& body)
 // not taken (a slow tile does not hold the others back); a tile finished before is skipped. A
 // tile that fails stops the run, or with `keep_going` leaves `tiles/<tile>.failed` (its error).
 // Returns the tiles skipped.
-std::size_t recognize_tiles(const PSOR::Tile_plan& plan, int parts, const fs::path& dir, std::size_t threads,
-                            bool keep_going, const Tile_recognizer& recognize, Progress& progress)
+std::size_t recognize_tiles(const Scan_files& reader, const PSOR::Tile_plan& plan, int parts, const fs::path& dir,
+                            std::size_t threads, bool keep_going, const Tile_recognizer& recognize, Progress& progress)
 {
   const Ranks& ranks = Ranks::world();
   // The largest tiles first: the last tiles taken are small ones, so the ranks and threads end
@@ -470,7 +534,7 @@ std::size_t recognize_tiles(const PSOR::Tile_plan& plan, int parts, const fs::pa
           try {
             std::vector<std::uint64_t> index;
             std::vector<Point_3> points;
-            read_tile_points(dir, t, parts, index, points);
+            read_tile_points(reader, dir, t, parts, index, points);
             if(fail_on_purpose(t))
               throw Cli_error("failed on purpose (SHAPE_ANALYSIS_FAIL_TILE)");
             const PSOR::Tile_recognition r = recognize(plan, t, points);
@@ -547,7 +611,7 @@ Recognition_in_tiles recognize_in_tiles(const Scan_files& reader, const std::str
   }
   together(ranks, [&]() { fs::create_directories(dir / "tiles"); });
   m.seconds_indexing = indexing.seconds();
-  m.tiles_reused = recognize_tiles(plan, parts, dir, options.number_of_threads, keep_going, recognize, progress);
+  m.tiles_reused = recognize_tiles(reader, plan, parts, dir, options.number_of_threads, keep_going, recognize, progress);
 
   progress.stage("merging the tiles");
   m.object.assign(std::size_t(last - m.first), -1);
@@ -562,7 +626,7 @@ Recognition_in_tiles recognize_in_tiles(const Scan_files& reader, const std::str
         m.failed_tiles.emplace_back(t, read_file(result.string() + ".failed"));
         std::vector<std::uint64_t> index;
         std::vector<Point_3> points;
-        read_tile_points(dir, t, parts, index, points);
+        read_tile_points(reader, dir, t, parts, index, points);
         for(std::size_t k = 0; k < points.size(); ++k)
           if(index[k] >= m.first && index[k] < last && plan.tile_of(points[k].x(), points[k].y()) == t)
             m.ground[std::size_t(index[k] - m.first)] = 0;

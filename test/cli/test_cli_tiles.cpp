@@ -13,6 +13,7 @@
 
 #include "tool_process.h"
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <csignal>
@@ -99,6 +100,45 @@ TEST_F(TilesTest, AFolderOfScansIsRecognizedAsTheirUnion)
   EXPECT_TRUE(read_file(dir / "objects.ply") == objects);
   EXPECT_EQ(read_file(dir / "locations.csv"), locations);
   EXPECT_NE(read_file(dir / "report.json").find("part2.ply"), std::string::npos);
+}
+
+// A scan in acquisition order is read back by runs of consecutive points (`.runs` files, no copy);
+// a scan in random order has its tiles' points copied (a third pass): both give the bytes of the
+// in-memory run of the same file.
+TEST_F(TilesTest, ScatteredPointsAreCopiedOrderedOnesReadInRuns)
+{
+  const fs::path dir = root / "runs";
+  std::vector<std::string> ordered = recognize(dir, (dir / "work").string());
+  ordered[5] = "60"; // tiles as wide as the street: a scan line crosses one or two
+  ASSERT_TRUE(run_tool(ordered));
+  long runs = 0, copies = 0;
+  for(const auto& entry : fs::directory_iterator(dir / "work" / "points"))
+    (entry.path().extension() == ".runs" ? runs : copies) += 1;
+  EXPECT_GE(runs, 3); // a file per tile and thread
+  EXPECT_EQ(copies, 0);
+  // The same street with its points shuffled.
+  std::string ply = read_file(scan);
+  const std::size_t end = ply.find("end_header\n") + 11, n = std::stoul(ply.substr(ply.find("element vertex ") + 15));
+  const std::size_t record = (ply.size() - end) / n;
+  std::vector<std::size_t> order(n);
+  for(std::size_t i = 0; i < n; ++i)
+    order[i] = i;
+  std::shuffle(order.begin(), order.end(), std::mt19937(3));
+  std::string shuffled = ply.substr(0, end);
+  for(std::size_t i : order)
+    shuffled.append(ply, end + i * record, record);
+  const std::string file = (root / "shuffled.ply").string();
+  std::ofstream(file, std::ios::binary) << shuffled;
+  std::vector<std::string> in_memory = recognize(root / "shuffled_memory", ""), out_of_core = recognize(dir / "shuffled", (dir / "shuffled_work").string());
+  in_memory[2] = out_of_core[2] = file;
+  ASSERT_TRUE(run_tool(in_memory));
+  ASSERT_TRUE(run_tool(out_of_core));
+  EXPECT_TRUE(read_file(dir / "shuffled" / "objects.ply") == read_file(root / "shuffled_memory" / "objects.ply"));
+  runs = copies = 0;
+  for(const auto& entry : fs::directory_iterator(dir / "shuffled_work" / "points"))
+    (entry.path().extension() == ".runs" ? runs : copies) += 1;
+  EXPECT_EQ(runs, 0);
+  EXPECT_GT(copies, 10);
 }
 
 TEST_F(TilesTest, OutOfCoreGivesTheInMemoryBytesAndReusesFinishedTiles)
