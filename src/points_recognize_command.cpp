@@ -243,6 +243,8 @@ int run_recognize(const Recognize_options& o)
     extra["ranks"] = ranks.size();
     extra["tiles_reused"] = tiled.tiles_reused;
     extra["seconds_indexing"] = tiled.seconds_indexing;
+    extra["seconds_tiles"] = tiled.seconds_tiles;
+    extra["seconds_merging"] = tiled.seconds_merging;
     if(model && model->context)
       classify_with_context(*model, read_streets(o.streets, o.crs, o.scan_origin, horizontal_bbox_of_file(*reader)), r);
     seconds = work.seconds();

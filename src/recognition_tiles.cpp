@@ -611,7 +611,10 @@ Recognition_in_tiles recognize_in_tiles(const Scan_files& reader, const std::str
   }
   together(ranks, [&]() { fs::create_directories(dir / "tiles"); });
   m.seconds_indexing = indexing.seconds();
+  Stopwatch tiles;
   m.tiles_reused = recognize_tiles(reader, plan, parts, dir, options.number_of_threads, keep_going, recognize, progress);
+  m.seconds_tiles = tiles.seconds();
+  Stopwatch merging;
 
   progress.stage("merging the tiles");
   m.object.assign(std::size_t(last - m.first), -1);
@@ -650,6 +653,7 @@ Recognition_in_tiles recognize_in_tiles(const Scan_files& reader, const std::str
   for(std::size_t i = 0; i < m.object.size(); ++i)
     if(m.ground[i])
       m.object[i] = -1;
+  m.seconds_merging = merging.seconds();
   return m;
 }
 

@@ -121,7 +121,9 @@ struct Recognition_in_tiles
   std::vector<char> ground;
   std::size_t tiles_reused = 0; // tiles found finished in the work folder
   std::vector<std::pair<std::size_t, std::string>> failed_tiles; // with keep_going: the tiles left out, their errors
-  double seconds_indexing = 0;  // the two passes over the scan
+  double seconds_indexing = 0;  // the passes over the scan
+  double seconds_tiles = 0;     // recognizing the tiles (reading their points, writing their results)
+  double seconds_merging = 0;   // reading every tile's result, this rank's part of the points
 };
 
 // The recognition of the scan of `reader` in tiles of `options` (its tile_size, tile_margin,
