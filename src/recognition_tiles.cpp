@@ -33,6 +33,10 @@
 #include <sstream>
 #include <unordered_map>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 namespace shape_analysis_cli {
 
 namespace {
@@ -486,6 +490,32 @@ bool fail_on_purpose(std::size_t t)
   return v && std::to_string(t) == v;
 }
 
+// An exclusive lock of a work folder (flock of its file `lock`), held until destroyed; a run that
+// finds it taken fails at once.
+class Folder_lock
+{
+public:
+  Folder_lock() = default;
+  Folder_lock(const Folder_lock&) = delete;
+  Folder_lock& operator=(const Folder_lock&) = delete;
+  ~Folder_lock()
+  {
+    if(m_fd >= 0)
+      ::close(m_fd);
+  }
+  void take(const fs::path& file, const std::string& folder)
+  {
+    m_fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if(m_fd < 0)
+      throw Cli_error("--work-dir " + folder + ": cannot create its lock file");
+    if(::flock(m_fd, LOCK_EX | LOCK_NB) != 0)
+      throw Cli_error("--work-dir " + folder + ": another run is using this folder");
+  }
+
+private:
+  int m_fd = -1;
+};
+
 // Runs body() on `threads` threads (0: as many as TBB chooses) at once, each until it returns.
 template <typename Body>
 void on_threads(std::size_t threads, const Body& body)
@@ -580,13 +610,17 @@ Recognition_in_tiles recognize_in_tiles(const Scan_files& reader, const std::str
   Stopwatch indexing;
   const std::string key = plan_key(reader, options, identity);
   std::string text;
+  Folder_lock lock; // rank 0's, for the whole run: one run at a time in a work folder
   together(ranks, [&]() {
     std::error_code ec;
     fs::create_directories(dir, ec);
     if(!fs::is_directory(dir, ec))
       throw Cli_error("--work-dir " + work_dir + ": not a folder that can be created");
-    if(ranks.rank() == 0 && fs::exists(dir / "plan", ec))
-      text = read_file(dir / "plan");
+    if(ranks.rank() == 0) {
+      lock.take(dir / "lock", work_dir);
+      if(fs::exists(dir / "plan", ec))
+        text = read_file(dir / "plan");
+    }
   });
   text = ranks.broadcast(text);
   PSOR::Tile_plan plan;

@@ -19,6 +19,7 @@
 #include <csignal>
 #include <iostream>
 #include <random>
+#include <sys/file.h>
 #include <string>
 #include <thread>
 #include <vector>
@@ -278,6 +279,27 @@ TEST(Generator, ManyPointsAreWrittenSegmentBySegment)
     EXPECT_NE(read_file(r).find("\"location\""), std::string::npos) << name;
   }
   fs::remove_all(root);
+}
+
+// One run at a time in a work folder: a second finds it locked and fails at once, with no output.
+TEST_F(TilesTest, AWorkFolderInUseIsRefused)
+{
+  const fs::path dir = root / "locked";
+  fs::create_directories(dir / "work");
+  const int fd = ::open((dir / "work" / "lock").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0); // as a run in progress holds it
+  Launch launch;
+  launch.standard_error = (root / "errors.txt").string();
+  const int status = wait_for(start_program(tool, recognize(dir, (dir / "work").string()), launch));
+  ::close(fd);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  EXPECT_NE(read_file(root / "errors.txt").find("another run is using this folder"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "objects.ply"));
+  // Released: the run goes.
+  ASSERT_TRUE(run_tool(recognize(dir, (dir / "work").string())));
+  EXPECT_TRUE(read_file(dir / "objects.ply") == objects);
 }
 
 #ifdef SHAPE_ANALYSIS_MPIRUN
