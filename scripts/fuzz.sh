@@ -11,14 +11,14 @@ seconds="${1:-600}"
 shift || true
 targets=("$@")
 if [ "${#targets[@]}" -eq 0 ]; then
-  targets=(off ply_mesh obj stl ply xyz las kitti seg locations truth labels model osm command_line)
+  targets=(off ply_mesh obj stl ply xyz las kitti pieces_ply pieces_las pieces_kitti seg locations truth labels model osm command_line)
 fi
 "$root/scripts/install_dependencies.sh" clang libclang-rt-14-dev
 out="${SHAPE_ANALYSIS_FUZZ_DIR:-$root/build-fuzz}" # (another folder: a second pass beside a running one)
 cmake -S "$root" -B "$out" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
   -DSHAPE_ANALYSIS_SANITIZE=ON -DSHAPE_ANALYSIS_BUILD_FUZZERS=ON -DSHAPE_ANALYSIS_BUILD_TESTS=OFF \
-  -DSHAPE_ANALYSIS_BUILD_EXAMPLES=OFF -DSHAPE_ANALYSIS_BUILD_BENCHMARKS=OFF \
+  -DSHAPE_ANALYSIS_BUILD_EXAMPLES=OFF -DSHAPE_ANALYSIS_BUILD_BENCHMARKS=OFF -DSHAPE_ANALYSIS_WITH_MPI=OFF \
   -DCMAKE_CXX_FLAGS=-fsanitize=fuzzer-no-link >/dev/null
 cmake --build "$out" --target shape_analysis_fuzz --parallel 2
 
@@ -46,6 +46,9 @@ seed ply "$inputs/*cloud*.ply" "$inputs/one_point.ply" "$inputs/no_points.ply" "
 seed xyz "$inputs/*.xyz"
 seed las "$inputs/*.las"
 seed kitti "$inputs/*.bin"
+seed pieces_ply "$inputs/*cloud*.ply" "$inputs/one_point.ply" "$inputs/no_points.ply" "$inputs/nan_ascii.ply"
+seed pieces_las "$inputs/*.las"
+seed pieces_kitti "$inputs/*.bin"
 seed seg "$inputs/*.seg"
 seed locations "$inputs/*location*.csv" "$inputs/locations.csv" "$inputs/no_header.csv" "$inputs/two_columns.csv"
 seed truth "$inputs/*.json"

@@ -6,6 +6,9 @@
 // runs each in turn):
 //   off, ply_mesh, obj, stl   the tool's mesh reader (read_triangle_mesh()) on a file of that type
 //   ply, xyz, las, kitti      read_point_set() on a point file of that type
+//   pieces_ply, pieces_las, pieces_kitti
+//                             Point_set_file_reader on a point file of that type, every point
+//                             read in pieces of 7 (coordinates, properties, records)
 //   seg                       the tool's label files
 //   locations                 the tool's locations (.csv)
 //   truth                     the ground truth of 'points generate' (.json)
@@ -22,6 +25,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Point_set_3.h>
+#include <CGAL/Point_set_object_recognition/Point_set_file_reader.h>
 #include <CGAL/Point_set_object_recognition/read_point_set.h>
 #ifdef CGAL_SHAPE_ANALYSIS_USE_OSMIUM
 #include <CGAL/Point_set_object_recognition/read_street_map.h>
@@ -67,6 +71,18 @@ void read_one(const std::uint8_t* data, std::size_t size)
   } else if(t == "ply" || t == "xyz" || t == "las" || t == "kitti") {
     CGAL::Point_set_3<CGAL::Epick::Point_3> points;
     CGAL::Point_set_object_recognition::read_point_set(as_file(data, size, t == "kitti" ? ".bin" : "." + t), points);
+  } else if(t == "pieces_ply" || t == "pieces_las" || t == "pieces_kitti") {
+    const std::string e = t == "pieces_kitti" ? ".bin" : "." + t.substr(7);
+    const CGAL::Point_set_object_recognition::Point_set_file_reader reader(as_file(data, size, e));
+    CGAL::Point_set_3<CGAL::Epick::Point_3> points;
+    std::vector<double> xyz;
+    std::vector<unsigned char> records;
+    for(std::uint64_t first = 0; first < reader.number_of_points() && first < 70000; first += 7) {
+      const std::size_t count = std::size_t(std::min<std::uint64_t>(7, reader.number_of_points() - first));
+      reader.read_coordinates(first, count, xyz);
+      reader.read(first, count, points);
+      reader.read_records(first, count, records);
+    }
   } else if(t == "seg") {
     SAC::read_labels(as_file(data, size, ".seg"));
   } else if(t == "locations") {
