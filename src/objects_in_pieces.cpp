@@ -164,8 +164,8 @@ void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path
     write_objects_file(bytes, false, reader.filename(), p.points, p.object, p.ground, command, p.label, comment, class_names);
     return bytes.str();
   };
-  // The header (a placeholder of its size for LAS, written at the end) and the records' size, from
-  // the first point; rank 0 stages the file with it.
+  // The header (for LAS, zeros of its size until the end, when the box and counts are known) and
+  // the records' size, from the first point; rank 0 stages the file with it.
   std::string header, temporary;
   std::size_t record = 0;
   std::unique_ptr<PSOR::Las_point_set_pieces<Point_3>> las_pieces;

@@ -56,20 +56,6 @@ struct Recognize_options
   bool quiet = false, verbose = false;
 };
 
-// The horizontal box of a scan read piece by piece (xmin, ymin, xmax, ymax).
-std::array<double, 4> horizontal_bbox_of_file(const Scan_files& reader)
-{
-  std::array<double, 4> b{{1e300, 1e300, -1e300, -1e300}};
-  std::vector<double> xyz;
-  const std::size_t piece = std::size_t(1) << 20;
-  for(std::uint64_t first = 0; first < reader.number_of_points(); first += piece) {
-    reader.read_coordinates(first, std::size_t(std::min<std::uint64_t>(piece, reader.number_of_points() - first)), xyz);
-    for(std::size_t k = 0; k < xyz.size(); k += 3)
-      b = {std::min(b[0], xyz[k]), std::min(b[1], xyz[k + 1]), std::max(b[2], xyz[k]), std::max(b[3], xyz[k + 1])};
-  }
-  return b;
-}
-
 // What decides a tile's result beside the scan and the tiles: the methods, the radius, the model
 // (its file's path, size and time).
 std::string recognition_identity(const Recognize_options& o, const PSOR::Recognize_objects_options& ro)
@@ -246,7 +232,8 @@ int run_recognize(const Recognize_options& o)
     extra["seconds_tiles"] = tiled.seconds_tiles;
     extra["seconds_merging"] = tiled.seconds_merging;
     if(model && model->context)
-      classify_with_context(*model, read_streets(o.streets, o.crs, o.scan_origin, horizontal_bbox_of_file(*reader)), r);
+      classify_with_context(*model, read_streets(o.streets, o.crs, o.scan_origin,
+                                                            {{tiled.lowest[0], tiled.lowest[1], tiled.highest[0], tiled.highest[1]}}), r);
     seconds = work.seconds();
   } else {
     progress.stage("reading " + o.input);

@@ -162,6 +162,7 @@ private:
 // own; part j of rank r is part r * parts + j of the files (their order is the scan's).
 PSOR::Tile_plan index_scan(const Scan_files& reader, const fs::path& dir, const PSOR::Recognize_objects_options& o,
                            std::uint64_t begin, std::uint64_t end, std::size_t parts, std::array<double, 3>& lowest,
+                           std::array<double, 3>& highest,
                            Progress& progress)
 {
   const Ranks& ranks = Ranks::world();
@@ -189,6 +190,7 @@ PSOR::Tile_plan index_scan(const Scan_files& reader, const fs::path& dir, const 
       lo[c] = std::min(lo[c], part_lo[j][c]), hi[c] = std::max(hi[c], part_hi[j][c]);
   ranks.min_max(lo, hi);
   lowest = {{lo[0], lo[1], lo[2]}};
+  highest = {{hi[0], hi[1], hi[2]}};
   PSOR::Tile_plan plan;
   together(ranks, [&]() {
     const auto np = PSOR::parameters::tile_size(o.tile_size).tile_margin(o.tile_margin);
@@ -271,13 +273,15 @@ PSOR::Tile_plan index_scan(const Scan_files& reader, const fs::path& dir, const 
   return plan;
 }
 
-// The plan file: the key, the grid, the tiles' counts and the number of parts of the tiles' point
+// The plan file: the key, the scan's box, the grid, the tiles' counts and the number of parts of the tiles' point
 // files (the ranks that wrote them).
-std::string plan_text(const std::string& key, const PSOR::Tile_plan& plan, int parts, const std::array<double, 3>& lowest)
+std::string plan_text(const std::string& key, const PSOR::Tile_plan& plan, int parts, const std::array<double, 3>& lowest,
+                      const std::array<double, 3>& highest)
 {
   std::ostringstream p;
   p.precision(17);
-  p << key << "parts " << parts << "\nlowest " << lowest[0] << ' ' << lowest[1] << ' ' << lowest[2] << "\norigin " << plan.origin[0] << ' ' << plan.origin[1] << "\ngrid " << plan.columns
+  p << key << "parts " << parts << "\nbox " << lowest[0] << ' ' << lowest[1] << ' ' << lowest[2] << ' ' << highest[0] << ' '
+    << highest[1] << ' ' << highest[2] << "\norigin " << plan.origin[0] << ' ' << plan.origin[1] << "\ngrid " << plan.columns
     << ' ' << plan.rows << "\ncounts";
   for(std::size_t t = 0; t < plan.number_of_tiles(); ++t)
     if(plan.number_of_points[t] > 0)
@@ -288,14 +292,14 @@ std::string plan_text(const std::string& key, const PSOR::Tile_plan& plan, int p
 
 // The plan of a plan file's `text` when it was made with `key`.
 bool read_plan(const std::string& text, const std::string& key, const PSOR::Recognize_objects_options& o,
-               PSOR::Tile_plan& plan, int& parts, std::array<double, 3>& lowest)
+               PSOR::Tile_plan& plan, int& parts, std::array<double, 3>& lowest, std::array<double, 3>& highest)
 {
   if(text.compare(0, key.size(), key) != 0)
     return false;
   std::istringstream in(text.substr(key.size()));
   std::string word;
   plan.tile_size = o.tile_size, plan.tile_margin = o.tile_margin;
-  if(!(in >> word >> parts >> word >> lowest[0] >> lowest[1] >> lowest[2] >> word >> plan.origin[0] >> plan.origin[1] >>
+  if(!(in >> word >> parts >> word >> lowest[0] >> lowest[1] >> lowest[2] >> highest[0] >> highest[1] >> highest[2] >> word >> plan.origin[0] >> plan.origin[1] >>
        word >> plan.columns >> plan.rows >> word) ||
      word != "counts" || parts < 1)
     return false;
@@ -628,7 +632,7 @@ Recognition_in_tiles recognize_in_tiles(const Scan_files& reader, const std::str
   const std::size_t parts_per_rank = std::size_t(std::stoul(ranks.broadcast(std::to_string(
     options.number_of_threads > 0 ? options.number_of_threads : std::max(1u, std::thread::hardware_concurrency())))));
   int parts = ranks.size() * int(parts_per_rank);
-  if(!read_plan(text, key, options, plan, parts, m.lowest)) { // a new plan: the tiles done before are not for it
+  if(!read_plan(text, key, options, plan, parts, m.lowest, m.highest)) { // a new plan: the tiles done before are not for it
     parts = ranks.size() * int(parts_per_rank);
     together(ranks, [&]() {
       std::error_code ec;
@@ -637,10 +641,10 @@ Recognition_in_tiles recognize_in_tiles(const Scan_files& reader, const std::str
         fs::remove_all(dir / "tiles", ec);
       }
     });
-    plan = index_scan(reader, dir, options, m.first, last, parts_per_rank, m.lowest, progress);
+    plan = index_scan(reader, dir, options, m.first, last, parts_per_rank, m.lowest, m.highest, progress);
     together(ranks, [&]() {
       if(ranks.rank() == 0)
-        write_whole_file(dir / "plan", plan_text(key, plan, parts, m.lowest));
+        write_whole_file(dir / "plan", plan_text(key, plan, parts, m.lowest, m.highest));
     });
   }
   together(ranks, [&]() { fs::create_directories(dir / "tiles"); });

@@ -115,7 +115,7 @@ struct Recognition_in_tiles
 {
   PSOR::Object_recognition_result result; // object_of_point and kind left empty; objects' points: this rank's
   std::vector<std::uint64_t> object_points; // per object, its points that are not ground (all ranks')
-  std::array<double, 3> lowest{{0, 0, 0}}; // the smallest coordinates of the scan
+  std::array<double, 3> lowest{{0, 0, 0}}, highest{{0, 0, 0}}; // the scan's box
   std::uint64_t first = 0;
   std::vector<int> object;
   std::vector<char> ground;
