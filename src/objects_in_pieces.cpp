@@ -9,7 +9,14 @@
 #include <CGAL/Point_set_3/IO/PLY.h>
 #include <CGAL/Point_set_object_recognition/write_point_set.h>
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -22,8 +29,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The points first to first + count - 1 of the scan with this rank's objects, kinds and labels
-// for those in its part (-1, 0, -1 for the others).
+// The points first to first + count - 1 of the scan (unless only their values are asked for) with
+// this rank's objects, kinds and labels for those in its part (-1, 0, -1 for the others).
 struct Piece
 {
   CGAL::Point_set_3<Point_3> points;
@@ -32,10 +39,11 @@ struct Piece
 };
 
 Piece read_piece(const Scan_files& reader, const Recognition_in_tiles& m, const std::vector<int>& label,
-                 std::uint64_t first, std::size_t count)
+                 std::uint64_t first, std::size_t count, bool values_only = false)
 {
   Piece p;
-  reader.read(first, count, p.points);
+  if(!values_only)
+    reader.read(first, count, p.points);
   p.object.assign(count, -1);
   p.ground.assign(count, 0);
   if(!label.empty())
@@ -50,13 +58,53 @@ Piece read_piece(const Scan_files& reader, const Recognition_in_tiles& m, const 
   return p;
 }
 
-// Writes `bytes` at `offset` of the file `path`.
+// Reserves the disk blocks of the file `path` up to `size` bytes (its size then), so that writing
+// into a mapping of it cannot run out of space; false where the file system cannot (nothing done).
+bool reserve(const std::string& path, std::uint64_t size)
+{
+  const int fd = ::open(path.c_str(), O_RDWR | O_CLOEXEC);
+  if(fd < 0)
+    return false;
+  struct stat st;
+  int error = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) ? 0 : EOPNOTSUPP;
+  if(error == 0)
+    while((error = ::fallocate(fd, 0, 0, off_t(size)) == 0 ? 0 : errno) == EINTR) {
+    }
+  ::close(fd);
+  if(error == ENOSPC || error == EFBIG || error == EDQUOT)
+    throw Cli_error("cannot write '" + path + "': no room for " + std::to_string(size) + " bytes on its disk");
+  return error == 0;
+}
+
+// Writes `bytes` at `offset` of the file `path`: through a mapping of the file when its blocks are
+// reserved up to there (reserve(); threads and ranks then write side by side without the file's
+// write lock: twice to three times faster here), else with pwrite().
 void write_at(const std::string& path, std::uint64_t offset, const char* bytes, std::size_t size)
 {
-  std::fstream out(path, std::ios::binary | std::ios::in | std::ios::out);
-  out.seekp(std::streamoff(offset));
-  if(!out.write(bytes, std::streamsize(size)) || !out.flush())
-    throw Cli_error("error while writing '" + path + "' (disk full?)");
+  const int fd = ::open(path.c_str(), O_RDWR | O_CLOEXEC);
+  if(fd < 0)
+    throw Cli_error("cannot open '" + path + "' to write it: " + std::strerror(errno));
+  struct stat st;
+  bool done = false;
+  if(size > 0 && ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && std::uint64_t(st.st_size) >= offset + size) {
+    const std::uint64_t page = std::uint64_t(::sysconf(_SC_PAGESIZE)), start = offset / page * page;
+    void* map = ::mmap(nullptr, std::size_t(offset + size - start), PROT_READ | PROT_WRITE, MAP_SHARED, fd, off_t(start));
+    if(map != MAP_FAILED) {
+      std::memcpy(static_cast<char*>(map) + (offset - start), bytes, size);
+      done = ::munmap(map, std::size_t(offset + size - start)) == 0;
+    }
+  }
+  for(std::size_t written = 0; !done && written < size;) {
+    const ssize_t w = ::pwrite(fd, bytes + written, size - written, off_t(offset + written));
+    if(w < 0 && errno == EINTR)
+      continue;
+    if(w <= 0) {
+      ::close(fd);
+      throw Cli_error("error while writing '" + path + "' (disk full?)");
+    }
+    written += std::size_t(w);
+  }
+  ::close(fd);
 }
 
 // The vertex properties ("type name") of the PLY header `text`.
@@ -190,9 +238,12 @@ void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path
     if(ranks.rank() == 0)
       outputs.stage_file(path, [&](const std::string& file) {
         temporary = file;
-        std::ofstream out(file, std::ios::binary | std::ios::trunc);
-        if(!out.write(header.data(), std::streamsize(header.size())) || !out.flush())
-          throw Cli_error("cannot write '" + path + "'");
+        {
+          std::ofstream out(file, std::ios::binary | std::ios::trunc);
+          if(!out.write(header.data(), std::streamsize(header.size())) || !out.flush())
+            throw Cli_error("cannot write '" + path + "'");
+        }
+        reserve(file, header.size() + n * record);
       });
   });
   temporary = ranks.broadcast(temporary);
@@ -220,7 +271,7 @@ void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path
     const auto write_part = [&](std::size_t j) {
       for(std::uint64_t first = part_first(j); first < part_first(j + 1); first += piece) {
         const std::size_t count = std::size_t(std::min<std::uint64_t>(piece, part_first(j + 1) - first));
-        const Piece p = read_piece(reader, m, label, first, count);
+        const Piece p = read_piece(reader, m, label, first, count, from_scan);
         if(las) {
           std::vector<unsigned char> bytes;
           PSOR::Las_point_set_pieces<Point_3>::Summary s;
