@@ -21,6 +21,7 @@
 #include <fstream>
 #include <memory>
 #include <mutex>
+#include <numeric>
 #include <sstream>
 
 namespace shape_analysis_cli {
@@ -56,6 +57,34 @@ Piece read_piece(const Scan_files& reader, const Recognition_in_tiles& m, const 
         p.label[k] = label[i];
     }
   return p;
+}
+
+// Keeps the points of `p` that are in an object (and their records, `record` bytes each, when
+// `records` is not null), in order.
+void keep_object_points(Piece& p, std::vector<unsigned char>* records, std::size_t record)
+{
+  Piece kept;
+  const bool points = !p.points.empty();
+  if(points)
+    kept.points.copy_properties(p.points);
+  std::size_t k = 0, w = 0;
+  for(auto i = p.points.begin(); k < p.object.size(); ++k) {
+    if(p.object[k] >= 0) {
+      if(points)
+        kept.points.insert(p.points, *i);
+      kept.object.push_back(p.object[k]);
+      kept.ground.push_back(p.ground[k]);
+      if(!p.label.empty())
+        kept.label.push_back(p.label[k]);
+      if(records)
+        std::copy_n(records->begin() + std::ptrdiff_t(k * record), record, records->begin() + std::ptrdiff_t(w++ * record));
+    }
+    if(points)
+      ++i;
+  }
+  if(records)
+    records->resize(w * record);
+  p = std::move(kept);
 }
 
 // Reserves the disk blocks of the file `path` up to `size` bytes (its size then), so that writing
@@ -201,11 +230,33 @@ void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path
                                   const Scan_files& reader, const Recognition_in_tiles& m,
                                   const std::string& command, const std::vector<int>& label,
                                   const std::string& comment, const std::vector<std::string>& class_names,
-                                  std::size_t threads, std::size_t piece)
+                                  std::size_t threads, bool only_objects, std::size_t piece)
 {
   const Ranks& ranks = Ranks::world();
-  const std::uint64_t n = reader.number_of_points(), last = m.first + m.object.size();
+  const std::uint64_t last = m.first + m.object.size();
   const bool las = lower_extension(path) == ".las";
+  // The parts of the rank's points its threads write; where each part's records start in the
+  // output: all the points before it, or with `only_objects` those in an object (every rank's).
+  const std::size_t parts = std::max<std::size_t>(1, threads);
+  const auto part_first = [&](std::size_t j) { return m.first + (last - m.first) * j / parts; };
+  std::vector<std::uint64_t> out_first(parts + 1, 0);
+  std::uint64_t n = reader.number_of_points();
+  if(only_objects) {
+    for(std::size_t j = 0; j < parts; ++j)
+      out_first[j + 1] = out_first[j] + std::uint64_t(std::count_if(m.object.begin() + std::ptrdiff_t(part_first(j) - m.first),
+                                                                    m.object.begin() + std::ptrdiff_t(part_first(j + 1) - m.first),
+                                                                    [](int o) { return o >= 0; }));
+    std::vector<std::uint64_t> by_rank(std::size_t(ranks.size()), 0);
+    by_rank[std::size_t(ranks.rank())] = out_first[parts];
+    ranks.sum(by_rank);
+    const std::uint64_t before = std::accumulate(by_rank.begin(), by_rank.begin() + ranks.rank(), std::uint64_t(0));
+    for(std::uint64_t& f : out_first)
+      f += before;
+    n = std::accumulate(by_rank.begin(), by_rank.end(), std::uint64_t(0));
+  } else {
+    for(std::size_t j = 0; j <= parts; ++j)
+      out_first[j] = part_first(j);
+  }
   // The bytes of a piece as a PLY file of its own (header and records).
   const auto ply_bytes = [&](const Piece& p) {
     std::ostringstream bytes;
@@ -223,7 +274,7 @@ void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path
     if(las) {
       las_pieces = std::make_unique<PSOR::Las_point_set_pieces<Point_3>>(
         objects_las_points(reader.filename(), one.points, one.object, one.ground, one.label, class_names, names),
-        m.lowest, PSOR::parameters::class_names(names));
+        m.lowest, PSOR::parameters::class_names(names).las_georeference(reader.las_georeference()));
       header.assign(las_pieces->header({}).size(), '\0');
       record = las_pieces->record_length();
     } else {
@@ -265,13 +316,20 @@ void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path
   });
   together(ranks, [&]() {
     std::mutex mutex;
-    const std::size_t parts = std::max<std::size_t>(1, threads);
     std::vector<std::string> errors(parts);
-    const auto part_first = [&](std::size_t j) { return m.first + (last - m.first) * j / parts; };
     const auto write_part = [&](std::size_t j) {
+      std::uint64_t at = out_first[j]; // the output's record of the piece's first point written
       for(std::uint64_t first = part_first(j); first < part_first(j + 1); first += piece) {
         const std::size_t count = std::size_t(std::min<std::uint64_t>(piece, part_first(j + 1) - first));
-        const Piece p = read_piece(reader, m, label, first, count, from_scan);
+        Piece p = read_piece(reader, m, label, first, count, from_scan);
+        std::vector<unsigned char> records;
+        if(from_scan)
+          reader.read_ply_records(first, count, records);
+        if(only_objects)
+          keep_object_points(p, from_scan ? &records : nullptr, reader.record_length());
+        const std::uint64_t written = p.object.size();
+        if(written == 0)
+          continue;
         if(las) {
           std::vector<unsigned char> bytes;
           PSOR::Las_point_set_pieces<Point_3>::Summary s;
@@ -281,21 +339,20 @@ void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path
           } catch(const CGAL::Shape_analysis::Bad_input& e) {
             throw Cli_error(e.what());
           }
-          write_at(temporary, header.size() + first * record, reinterpret_cast<const char*>(bytes.data()), bytes.size());
+          write_at(temporary, header.size() + at * record, reinterpret_cast<const char*>(bytes.data()), bytes.size());
           std::lock_guard<std::mutex> lock(mutex);
           summary.merge(s);
         } else if(from_scan) {
-          std::vector<unsigned char> records;
-          reader.read_ply_records(first, count, records);
           const std::string bytes = fast.records(records, reader.record_length(), p);
-          write_at(temporary, header.size() + first * record, bytes.data(), bytes.size());
+          write_at(temporary, header.size() + at * record, bytes.data(), bytes.size());
         } else {
           const std::string bytes = ply_bytes(p);
           const std::size_t end = bytes.find("end_header\n") + 11;
-          if(bytes.size() - end != count * record)
+          if(bytes.size() - end != written * record)
             throw Cli_error("cannot write '" + path + "': records of different sizes");
-          write_at(temporary, header.size() + first * record, bytes.data() + end, bytes.size() - end);
+          write_at(temporary, header.size() + at * record, bytes.data() + end, bytes.size() - end);
         }
+        at += written;
       }
     };
     run_parts(parts, [&](std::size_t j) {

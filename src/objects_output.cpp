@@ -8,11 +8,13 @@
 
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO/PLY.h>
+#include <CGAL/Point_set_object_recognition/Point_set_file_reader.h>
 #include <CGAL/Point_set_object_recognition/write_point_set.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -143,12 +145,28 @@ std::vector<std::pair<unsigned, std::string>> make_objects_las(Point_set& result
   return names;
 }
 
-// Writes `result` (objects_point_set()) as LAS 1.4 (make_objects_las(), write_las_point_set()).
-void write_objects_las(std::ostream& out, Point_set& result, const std::vector<std::string>& class_names)
+// The scale, offset and CRS records of the scan `input` when it is a LAS file (else none).
+std::optional<PSOR::Las_georeference> input_georeference(const std::string& input)
+{
+  if(lower_extension(input) != ".las")
+    return std::nullopt;
+  try {
+    return PSOR::Point_set_file_reader(input).las_georeference();
+  } catch(const CGAL::Shape_analysis::Bad_input&) {
+    return std::nullopt;
+  }
+}
+
+// Writes `result` (objects_point_set()) as LAS 1.4 (make_objects_las(), write_las_point_set()),
+// with `georeference`, else that of the scan `input` when it is a LAS file.
+void write_objects_las(std::ostream& out, Point_set& result, const std::string& input,
+                       const std::vector<std::string>& class_names,
+                       const std::optional<PSOR::Las_georeference>& georeference)
 {
   const auto names = make_objects_las(result, class_names);
   try {
-    PSOR::write_las_point_set(out, result, PSOR::parameters::class_names(names));
+    PSOR::write_las_point_set(
+      out, result, PSOR::parameters::class_names(names).las_georeference(georeference ? georeference : input_georeference(input)));
   } catch(const CGAL::Shape_analysis::Bad_input& e) {
     throw Cli_error(e.what());
   }
@@ -159,11 +177,12 @@ void write_objects_las(std::ostream& out, Point_set& result, const std::vector<s
 void write_objects_file(std::ostream& out, bool las, const std::string& input, const Point_set& points,
                         const std::vector<int>& object, const std::vector<char>& ground, const std::string& command,
                         const std::vector<int>& label, const std::string& comment,
-                        const std::vector<std::string>& class_names)
+                        const std::vector<std::string>& class_names,
+                        const std::optional<PSOR::Las_georeference>& georeference)
 {
   Point_set result = objects_point_set(input, points, object, ground, label, las ? 2 : 1);
   if(las)
-    return write_objects_las(out, result, class_names);
+    return write_objects_las(out, result, input, class_names, georeference);
   CGAL::IO::set_mode(out, CGAL::IO::BINARY);
   if(!CGAL::IO::write_PLY(out, result, "written by shape_analysis " + command + " (CGAL Global Shape Analysis)" +
                                           (comment.empty() ? std::string() : "\n" + comment)))
@@ -183,12 +202,46 @@ Point_set objects_las_points(const std::string& input, const Point_set& points, 
 void stage_objects_file(Output_files& outputs, const std::string& path, const std::string& input,
                         const Point_set& points, const std::vector<int>& object, const std::vector<char>& ground,
                         const std::string& command, const std::vector<int>& label, const std::string& comment,
-                        const std::vector<std::string>& class_names)
+                        const std::vector<std::string>& class_names,
+                        const std::optional<PSOR::Las_georeference>& georeference)
 {
   const bool las = lower_extension(path) == ".las";
   outputs.stage(path, true, [&](std::ostream& out) {
-    write_objects_file(out, las, input, points, object, ground, command, label, comment, class_names);
+    write_objects_file(out, las, input, points, object, ground, command, label, comment, class_names, georeference);
   });
+}
+
+void stage_object_points_file(Output_files& outputs, const std::string& path, const std::string& input,
+                              const Point_set& points, const std::vector<int>& object, const std::string& command, const std::vector<int>& label, const std::string& comment,
+                              const std::vector<std::string>& class_names)
+{
+  Point_set kept;
+  kept.copy_properties(points);
+  std::vector<int> kept_object, kept_label;
+  std::size_t k = 0;
+  for(Point_set::Index i : points) {
+    if(object[k] >= 0) {
+      kept.insert(points, i);
+      kept_object.push_back(object[k]);
+      if(!label.empty())
+        kept_label.push_back(label[k]);
+    }
+    ++k;
+  }
+  const std::vector<char> kept_ground(kept_object.size(), 0); // a point in an object is not ground
+  // A LAS output has the offset of the whole scan (or its georeference), as out of core.
+  std::optional<PSOR::Las_georeference> georeference = input_georeference(input);
+  if(!georeference && !points.empty()) {
+    georeference.emplace();
+    for(int c = 0; c < 3; ++c) {
+      double lowest = points.point(*points.begin())[c];
+      for(Point_set::Index i : points)
+        lowest = std::min(lowest, points.point(i)[c]);
+      georeference->offset[std::size_t(c)] = std::floor(lowest / 100) * 100;
+    }
+  }
+  stage_objects_file(outputs, path, input, kept, kept_object, kept_ground, command, kept_label, comment, class_names,
+                     georeference);
 }
 
 } // namespace shape_analysis_cli

@@ -17,6 +17,7 @@
 
 #include <array>
 #include <map>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -78,7 +79,14 @@ void stage_objects_file(Output_files& outputs, const std::string& path, const st
                         const CGAL::Point_set_3<Point_3>& points, const std::vector<int>& object,
                         const std::vector<char>& ground, const std::string& command,
                         const std::vector<int>& label = {}, const std::string& comment = "",
-                        const std::vector<std::string>& class_names = {});
+                        const std::vector<std::string>& class_names = {},
+                        const std::optional<PSOR::Las_georeference>& georeference = std::nullopt);
+// stage_objects_file() of the points in an object only (`object` >= 0), in order.
+void stage_object_points_file(Output_files& outputs, const std::string& path, const std::string& input,
+                              const CGAL::Point_set_3<Point_3>& points, const std::vector<int>& object,
+                              const std::string& command,
+                              const std::vector<int>& label, const std::string& comment,
+                              const std::vector<std::string>& class_names);
 // The points that stage_objects_file() writes as LAS (write_las_point_set() of them with
 // `names`, the class names of the Classification Lookup record).
 CGAL::Point_set_3<Point_3> objects_las_points(const std::string& input, const CGAL::Point_set_3<Point_3>& points,
@@ -90,7 +98,8 @@ CGAL::Point_set_3<Point_3> objects_las_points(const std::string& input, const CG
 void write_objects_file(std::ostream& out, bool las, const std::string& input, const CGAL::Point_set_3<Point_3>& points,
                         const std::vector<int>& object, const std::vector<char>& ground, const std::string& command,
                         const std::vector<int>& label = {}, const std::string& comment = "",
-                        const std::vector<std::string>& class_names = {});
+                        const std::vector<std::string>& class_names = {},
+                        const std::optional<PSOR::Las_georeference>& georeference = std::nullopt);
 
 // The points of `points generate`: x y z, instance, label, intensity, colours by class
 // (scene_segments.cpp).

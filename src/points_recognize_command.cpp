@@ -47,6 +47,7 @@ struct Recognize_options
   std::vector<std::string> inputs; // one without --work-dir
   std::string input, output, locations, report, model, work_dir;
   bool keep_going = false;
+  bool only_objects = false;
   PSOR::Recognize_objects_options recognition;
   std::string method = localization_method_name(recognition.localization_method);
   std::string segmentation = segmentation_method_name(recognition.segmentation_method);
@@ -283,7 +284,11 @@ int run_recognize(const Recognize_options& o)
     stage_objects_file_in_pieces(outputs, o.output, *reader, tiled, "points recognize", label,
                                  model ? model->label_comment() : std::string(), class_names,
                                  ro.number_of_threads > 0 ? ro.number_of_threads
-                                                          : std::max(1u, std::thread::hardware_concurrency()));
+                                                          : std::max(1u, std::thread::hardware_concurrency()),
+                                 o.only_objects);
+  else if(o.only_objects)
+    stage_object_points_file(outputs, o.output, o.input, points, object, "points recognize", label,
+                             model ? model->label_comment() : std::string(), class_names);
   else
     stage_objects_file(outputs, o.output, o.input, points, object, ground, "points recognize", label,
                        model ? model->label_comment() : std::string(), class_names);
@@ -405,7 +410,8 @@ void add_points_recognize_commands(CLI::App* points, std::function<int()>& run)
                         "--model, 'label' (the class index of the point's object; the PLY header comment names the "
                         "classes; an input 'label' becomes 'input_label'). LAS 1.4, format 7: these as extra bytes, "
                         "the classification 2 for ground, 64 + class for classified objects (named in the "
-                        "Classification Lookup record), 1 for the rest")
+                        "Classification Lookup record), 1 for the rest; a LAS scan's scale, offset and coordinate system "
+                        "records kept")
     ->required();
   recognize->add_option("--locations", g->locations,
                         "The locations found (.csv: a header line x,y,z, then one per line; with --model the "
@@ -441,9 +447,12 @@ void add_points_recognize_commands(CLI::App* points, std::function<int()>& run)
   recognize->add_option("--work-dir", g->work_dir,
                         "Work out of core in this folder (created if needed): the scan (LAS, binary PLY or KITTI) "
                         "is read piece by piece, each tile's points are written here and its result once it is "
-                        "done; memory holds the tiles in flight and 5 bytes per point. A run stopped midway goes "
+                        "done; memory holds the tiles in flight and about 4.2 bytes per point. A run stopped midway goes "
                         "on from the finished tiles when run again with the same scan and options. Under mpirun, "
                         "the ranks share the work (the folder must be one they all see)");
+  recognize->add_flag("--only-objects", g->only_objects,
+                      "Write only the points of the objects found to --output (in input order, with the same "
+                      "properties), not the whole scan: a city's objects are a few percent of its points");
   recognize->add_flag("--keep-going", g->keep_going,
                       "With --work-dir: a tile that cannot be processed is reported (the report's failed_tiles) "
                       "and left out (its points neither ground nor in an object) instead of failing the run; "

@@ -9,8 +9,8 @@
 // points of the tiles (PSOR::Tile_plan) and writes each tile's points (its own and its margin's)
 // to the work folder; the tiles are then recognized a few at a time (PSOR::recognize_tile), each
 // result written to the work folder, and merged in the order of the tiles as
-// recognize_objects() merges them. Memory: the tiles in flight and 5 bytes per point (the
-// object and kind of every point, for the output). A run that stops (killed, or a tile that
+// recognize_objects() merges them. Memory: the tiles in flight and 4 bytes and a bit per point
+// (the object and kind of every point, for the output), 24 per point of an object. A run that stops (killed, or a tile that
 // fails) leaves the finished tiles in the work folder; the next run with the same input and
 // options goes on from them.
 
@@ -29,6 +29,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,9 @@ public:
   // The records as stored, when every file is a PLY file with the same vertex records (else false).
   bool read_ply_records(std::uint64_t first, std::size_t count, std::vector<unsigned char>& bytes) const;
   std::size_t record_length() const { return m_readers.front().record_length(); }
+  // The scale, offset and CRS records of the scans when they are LAS files that share them (else
+  // none): the LAS output keeps them.
+  std::optional<PSOR::Las_georeference> las_georeference() const;
 
 private:
   // Calls f(reader, its first point, count) for the parts of the points [first, first + count)
@@ -118,12 +122,28 @@ struct Recognition_in_tiles
   std::array<double, 3> lowest{{0, 0, 0}}, highest{{0, 0, 0}}; // the scan's box
   std::uint64_t first = 0;
   std::vector<int> object;
-  std::vector<char> ground;
+  std::vector<bool> ground; // a bit per point
   std::size_t tiles_reused = 0; // tiles found finished in the work folder
   std::vector<std::pair<std::size_t, std::string>> failed_tiles; // with keep_going: the tiles left out, their errors
   double seconds_indexing = 0;  // the passes over the scan
   double seconds_tiles = 0;     // recognizing the tiles (reading their points, writing their results)
   double seconds_merging = 0;   // reading every tile's result, this rank's part of the points
+};
+
+// An exclusive lock of a work folder (flock of its file `lock`), held until destroyed; a run that
+// finds it taken fails at once (work_folder_lock.cpp).
+class Folder_lock
+{
+public:
+  Folder_lock() = default;
+  Folder_lock(const Folder_lock&) = delete;
+  Folder_lock& operator=(const Folder_lock&) = delete;
+  ~Folder_lock();
+  // Takes the lock of `file`, the lock file of the work folder `folder` (named in the errors).
+  void take(const std::string& file, const std::string& folder);
+
+private:
+  int m_fd = -1;
 };
 
 // The recognition of the scan of `reader` in tiles of `options` (its tile_size, tile_margin,
@@ -141,13 +161,14 @@ Recognition_in_tiles recognize_in_tiles(const Scan_files& reader, const std::str
 // content, the same bytes), pieces of `piece` points, each rank writing the records of its part of
 // the scan (`m.first`, `m.object`, `m.ground`; `label` as `m.object`) into the file that rank 0
 // stages in `outputs`, with `threads` threads (collective). A PLY output of a binary PLY scan
-// whose records it extends is written from the scan's records (checked on the first piece).
+// whose records it extends is written from the scan's records (checked on the first piece). With
+// `only_objects`, only the points in an object are written, in order.
 void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path,
                                   const Scan_files& reader, const Recognition_in_tiles& m,
                                   const std::string& command,
                                   const std::vector<int>& label, const std::string& comment,
                                   const std::vector<std::string>& class_names, std::size_t threads,
-                                  std::size_t piece = std::size_t(1) << 18);
+                                  bool only_objects = false, std::size_t piece = std::size_t(1) << 18);
 
 } // namespace shape_analysis_cli
 

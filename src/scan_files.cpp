@@ -101,4 +101,23 @@ bool Scan_files::read_ply_records(std::uint64_t first, std::size_t count, std::v
   return true;
 }
 
+std::optional<PSOR::Las_georeference> Scan_files::las_georeference() const
+{
+  const std::optional<PSOR::Las_georeference> first = m_readers.front().las_georeference();
+  const auto same = [](const PSOR::Las_georeference& a, const PSOR::Las_georeference& b) {
+    if(a.scale != b.scale || a.offset != b.offset || a.wkt != b.wkt || a.crs_records.size() != b.crs_records.size())
+      return false;
+    for(std::size_t r = 0; r < a.crs_records.size(); ++r)
+      if(a.crs_records[r].record_id != b.crs_records[r].record_id || a.crs_records[r].data != b.crs_records[r].data)
+        return false;
+    return true;
+  };
+  for(const PSOR::Point_set_file_reader& reader : m_readers) {
+    const std::optional<PSOR::Las_georeference> g = reader.las_georeference();
+    if(!first || !g || !same(*first, *g))
+      return std::nullopt;
+  }
+  return first;
+}
+
 } // namespace shape_analysis_cli

@@ -33,8 +33,9 @@ int main(int argc, char** argv)
       std::cout << ' ' << name;
     const auto box = CGAL::bounding_box(points.points().begin(), points.points().end());
     std::cout << "\nextent in the local frame: " << box << "\n";
-    if(argc > 2) { // the local origin added back: the LAS file has the coordinates read
-      PSOR::write_las_point_set(argv[2], points, PSOR::parameters::local_origin(r.offset));
+    if(argc > 2) { // the local origin added back, and a LAS scan's scale, offset and CRS kept
+      PSOR::write_las_point_set(argv[2], points,
+                                PSOR::parameters::local_origin(r.offset).las_georeference(r.las_georeference));
       std::cout << "written to " << argv[2] << "\n";
     }
   } catch(const CGAL::Shape_analysis::Bad_input& e) {

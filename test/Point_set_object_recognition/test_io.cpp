@@ -371,6 +371,114 @@ TEST_F(Io, LasWithVlrAndExtraBytesPerRecordIsReadField)
   EXPECT_NEAR(ps.point(*ps.begin()).x(), 23.45, 1e-9);
 }
 
+// The scan's scale, offset and coordinate system records are read (VLRs and LAS 1.4 extended
+// VLRs) and written again: the stored integers and the records come back unchanged.
+TEST_F(Io, LasGeoreferenceIsKeptThroughReadAndWrite)
+{
+  save(path("hand.las"), hand_made_las(3, 3));
+  Point_set ps;
+  const auto r = PR::read_point_set(path("hand.las"), ps);
+  ASSERT_TRUE(r.las_georeference.has_value());
+  const PR::Las_georeference& g = *r.las_georeference;
+  EXPECT_EQ(g.scale, (std::array<double, 3>{{0.01, 0.01, 0.001}}));
+  EXPECT_EQ(g.offset, (std::array<double, 3>{{600000, 5000000, 100}}));
+  ASSERT_EQ(g.crs_records.size(), 1u);
+  EXPECT_EQ(g.crs_records[0].record_id, 34735);
+  EXPECT_EQ(g.crs_records[0].description, std::string(32, 'd'));
+  EXPECT_EQ(g.crs_records[0].data, Bytes(20, 0xAB));
+  EXPECT_FALSE(g.wkt);
+  EXPECT_TRUE(PR::Point_set_file_reader(path("hand.las")).las_georeference().has_value());
+
+  PR::write_las_point_set(path("kept.las"), ps,
+                          PR::parameters::local_origin(r.offset).las_georeference(r.las_georeference));
+  const Bytes out = load(path("kept.las"));
+  ASSERT_GT(out.size(), 375u);
+  EXPECT_EQ(PRI::le_u16(out.data() + 6) & 0x10, 0); // GeoTIFF keys: not declared WKT
+  for(int c = 0; c < 3; ++c) {
+    EXPECT_EQ(PRI::le_f64(out.data() + 131 + 8 * c), g.scale[std::size_t(c)]);
+    EXPECT_EQ(PRI::le_f64(out.data() + 155 + 8 * c), g.offset[std::size_t(c)]);
+  }
+  const std::uint32_t data = PRI::le_u32(out.data() + 96), record = PRI::le_u16(out.data() + 105);
+  for(std::size_t i = 0; i < 3; ++i) { // the hand-made file's integers, exactly
+    const unsigned char* p = out.data() + data + i * record;
+    EXPECT_EQ(PRI::le_i32(p), std::int32_t(12345 + 100 * int(i)));
+    EXPECT_EQ(PRI::le_i32(p + 4), std::int32_t(-250 - int(i)));
+    EXPECT_EQ(PRI::le_i32(p + 8), -5000);
+  }
+  Point_set back;
+  const auto rb = PR::read_point_set(path("kept.las"), back);
+  ASSERT_TRUE(rb.las_georeference.has_value());
+  ASSERT_EQ(rb.las_georeference->crs_records.size(), 1u);
+  EXPECT_EQ(rb.las_georeference->crs_records[0].data, g.crs_records[0].data);
+  EXPECT_EQ(rb.las_georeference->crs_records[0].record_id, 34735);
+  // Written in pieces with the same georeference: the same file.
+  const PR::Las_point_set_pieces<Point> pieces(
+    ps, std::array<double, 3>{{0, 0, 0}}, PR::parameters::local_origin(r.offset).las_georeference(r.las_georeference));
+  std::vector<unsigned char> records;
+  const auto summary = pieces.records(ps, records);
+  std::vector<unsigned char> whole = pieces.header(summary);
+  whole.insert(whole.end(), records.begin(), records.end());
+  EXPECT_TRUE(whole == out);
+  // Without it: millimetres and no coordinate system record.
+  PR::write_las_point_set(path("plain.las"), ps, PR::parameters::local_origin(r.offset));
+  Point_set plain;
+  const auto rp = PR::read_point_set(path("plain.las"), plain);
+  EXPECT_TRUE(rp.las_georeference->crs_records.empty());
+  EXPECT_EQ(rp.las_georeference->scale[0], 0.001);
+
+  // A WKT record in an extended VLR of a LAS 1.4 file: read, then written as a VLR, WKT declared.
+  Bytes wkt_file = out;
+  const std::string wkt = "PROJCS[\"WGS 84 / UTM zone 32N\"]";
+  const std::uint64_t start = wkt_file.size();
+  put(wkt_file, 0, 2);
+  const std::string user = "LASF_Projection";
+  wkt_file.insert(wkt_file.end(), user.begin(), user.end());
+  wkt_file.insert(wkt_file.end(), 16 - user.size(), 0);
+  put(wkt_file, 2112, 2);
+  put(wkt_file, wkt.size(), 8);
+  wkt_file.insert(wkt_file.end(), 32, 0);
+  wkt_file.insert(wkt_file.end(), wkt.begin(), wkt.end());
+  Bytes field;
+  put(field, start, 8);
+  std::copy(field.begin(), field.end(), wkt_file.begin() + 235);
+  field.clear();
+  put(field, 1, 4);
+  std::copy(field.begin(), field.end(), wkt_file.begin() + 243);
+  wkt_file[6] = static_cast<unsigned char>(wkt_file[6] | 0x10);
+  save(path("wkt.las"), wkt_file);
+  Point_set w;
+  const auto rw = PR::read_point_set(path("wkt.las"), w);
+  ASSERT_EQ(rw.las_georeference->crs_records.size(), 2u);
+  EXPECT_EQ(rw.las_georeference->crs_records[1].record_id, 2112);
+  EXPECT_EQ(std::string(rw.las_georeference->crs_records[1].data.begin(), rw.las_georeference->crs_records[1].data.end()), wkt);
+  EXPECT_TRUE(rw.las_georeference->wkt);
+  PR::write_las_point_set(path("wkt_out.las"), w,
+                          PR::parameters::local_origin(rw.offset).las_georeference(rw.las_georeference));
+  const Bytes wo = load(path("wkt_out.las"));
+  EXPECT_EQ(PRI::le_u16(wo.data() + 6) & 0x10, 0x10);
+  EXPECT_EQ(PRI::le_u32(wo.data() + 100), PRI::le_u32(out.data() + 100) + 1); // one VLR more
+  Point_set w2;
+  const auto rw2 = PR::read_point_set(path("wkt_out.las"), w2);
+  EXPECT_EQ(rw2.las_georeference->crs_records.size(), 2u);
+
+  // Bad georeferences and records too large for a VLR are refused.
+  PR::Las_georeference bad = g;
+  bad.scale[1] = 0;
+  expect_bad_input([&] { PR::write_las_point_set(path("bad.las"), ps, PR::parameters::las_georeference(bad)); },
+                   "scale must be positive");
+  EXPECT_FALSE(std::filesystem::exists(path("bad.las")));
+  bad = g;
+  bad.crs_records[0].data.assign(70000, 1);
+  expect_bad_input([&] { PR::write_las_point_set(path("bad.las"), ps, PR::parameters::las_georeference(bad)); },
+                   "65,535");
+  // Points that do not fit 32-bit integers with the kept scale are refused, not wrapped.
+  bad = g;
+  bad.scale = {{1e-9, 1e-9, 1e-9}};
+  expect_bad_input([&] {
+    PR::write_las_point_set(path("bad.las"), ps, PR::parameters::local_origin(r.offset).las_georeference(bad));
+  }, "32-bit");
+}
+
 TEST_F(Io, LasExtraBytesAndClassNamesRoundTrip)
 {
   std::vector<std::array<double, 3>> world;

@@ -17,9 +17,11 @@
 #include <chrono>
 #include <fstream>
 #include <csignal>
+#include <cstring>
 #include <iostream>
 #include <random>
 #include <sys/file.h>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -140,6 +142,72 @@ TEST_F(TilesTest, ScatteredPointsAreCopiedOrderedOnesReadInRuns)
     (entry.path().extension() == ".runs" ? runs : copies) += 1;
   EXPECT_EQ(runs, 0);
   EXPECT_GT(copies, 10);
+}
+
+// The records of the binary PLY `bytes` whose int property `object` is at least 0, and their number.
+std::string object_records(const std::string& bytes, std::size_t& count)
+{
+  const std::size_t end = bytes.find("end_header\n") + 11;
+  std::istringstream header(bytes.substr(0, end));
+  std::string line;
+  std::size_t record = 0, object = std::string::npos, n = 0;
+  bool vertex = false;
+  while(std::getline(header, line)) {
+    std::istringstream words(line);
+    std::string word, type, name;
+    words >> word;
+    if(word == "element") {
+      words >> name >> n;
+      vertex = name == "vertex";
+    } else if(word == "property" && vertex) {
+      words >> type >> name;
+      if(name == "object")
+        object = record;
+      record += type == "double" ? 8 : (type == "int" || type == "float") ? 4 : type == "uchar" ? 1 : 0;
+    }
+  }
+  std::string kept;
+  count = 0;
+  for(std::size_t i = 0; object != std::string::npos && i < n; ++i) {
+    std::int32_t o;
+    std::memcpy(&o, bytes.data() + end + i * record + object, 4);
+    if(o >= 0) {
+      kept.append(bytes, end + i * record, record);
+      ++count;
+    }
+  }
+  return kept;
+}
+
+// --only-objects: the records of the points in objects, as the whole output has them, in memory
+// and out of core (PLY and LAS) alike.
+TEST_F(TilesTest, OnlyObjectsWritesTheObjectPointsOfTheWholeOutput)
+{
+  std::size_t expected_count = 0;
+  const std::string expected = object_records(objects, expected_count);
+  ASSERT_GT(expected_count, 1000u);
+  for(const std::string& ext : {std::string(".ply"), std::string(".las")}) {
+    std::vector<std::string> memory = recognize(root / "only_memory", ""),
+                             pieces = recognize(root / "only_pieces", (root / ("only_work" + ext)).string());
+    memory[9] = (root / "only_memory" / ("objects" + ext)).string();
+    pieces[9] = (root / "only_pieces" / ("objects" + ext)).string();
+    memory.push_back("--only-objects");
+    pieces.push_back("--only-objects");
+    ASSERT_TRUE(run_tool(memory)) << ext;
+    ASSERT_TRUE(run_tool(pieces)) << ext;
+    const std::string only = read_file(memory[9]);
+    EXPECT_TRUE(only == read_file(pieces[9])) << ext;
+    if(ext == ".ply") {
+      std::size_t count = 0;
+      EXPECT_TRUE(object_records(only, count) == expected);
+      EXPECT_EQ(count, expected_count);
+      EXPECT_EQ(only.size() - (only.find("end_header\n") + 11), expected.size()); // no other point
+    } else {
+      std::uint64_t n = 0;
+      std::memcpy(&n, only.data() + 247, 8); // LAS 1.4: the 64-bit point count
+      EXPECT_EQ(n, expected_count);
+    }
+  }
 }
 
 TEST_F(TilesTest, OutOfCoreGivesTheInMemoryBytesAndReusesFinishedTiles)
@@ -278,6 +346,62 @@ TEST(Generator, ManyPointsAreWrittenSegmentBySegment)
     EXPECT_EQ(report_number(read_file(r), "number_of_points"), n) << name;
     EXPECT_NE(read_file(r).find("\"location\""), std::string::npos) << name;
   }
+  fs::remove_all(root);
+}
+
+// A LAS scan's scale, offset and coordinate system records are those of the LAS output, in memory
+// and out of core alike (the same bytes).
+TEST(LasOutput, KeepsTheScansGeoreference)
+{
+  const fs::path root = fs::temp_directory_path() / ("shape_analysis_georeference_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root);
+  ASSERT_TRUE(run_tool({"points", "generate", "--points", "40000", "--length", "60", "--seed", "3", "-q", "-o",
+                        (root / "plain.las").string()}));
+  // A WKT record inserted before the points, and the x offset moved by 0.25 m (the scene with it):
+  // an offset the writer's own rule (a multiple of 100 m) would not choose.
+  std::string las = read_file(root / "plain.las");
+  ASSERT_GT(las.size(), 375u);
+  const auto u32 = [&](std::size_t at) {
+    std::uint32_t v = 0;
+    for(int b = 3; b >= 0; --b)
+      v = (v << 8) | static_cast<unsigned char>(las[at + std::size_t(b)]);
+    return v;
+  };
+  const auto set_u32 = [&](std::size_t at, std::uint32_t v) {
+    for(int b = 0; b < 4; ++b)
+      las[at + std::size_t(b)] = char((v >> (8 * b)) & 0xFF);
+  };
+  const std::string wkt = "PROJCS[\"WGS 84 / UTM zone 18N\",AUTHORITY[\"EPSG\",\"32618\"]]";
+  std::string vlr(54, '\0');
+  vlr.replace(2, 15, "LASF_Projection");
+  vlr[18] = char(2112 & 0xFF), vlr[19] = char(2112 >> 8);
+  vlr[20] = char(wkt.size() & 0xFF), vlr[21] = char(wkt.size() >> 8);
+  vlr += wkt;
+  const std::uint32_t data = u32(96);
+  las.insert(data, vlr);
+  set_u32(96, data + std::uint32_t(vlr.size()));
+  set_u32(100, u32(100) + 1);
+  double offset_x;
+  std::memcpy(&offset_x, las.data() + 155, 8);
+  offset_x += 0.25;
+  std::memcpy(&las[155], &offset_x, 8);
+  std::ofstream(root / "scan.las", std::ios::binary) << las;
+
+  for(const std::string& work : {std::string(), (root / "work").string()}) {
+    const fs::path out = root / (work.empty() ? "memory.las" : "pieces.las");
+    std::vector<std::string> args = {"points", "recognize", (root / "scan.las").string(), "-q", "-o", out.string()};
+    if(!work.empty())
+      args.insert(args.end(), {"--work-dir", work});
+    ASSERT_TRUE(run_tool(args)) << work;
+    const std::string o = read_file(out);
+    ASSERT_GT(o.size(), 375u);
+    EXPECT_EQ(o.substr(131, 48), las.substr(131, 48)) << "scale and offset, " << work;
+    EXPECT_NE(o.find("LASF_Projection"), std::string::npos) << work;
+    EXPECT_NE(o.find(wkt), std::string::npos) << work;
+    EXPECT_EQ(static_cast<unsigned char>(o[6]) & 0x10, 0x10) << work; // WKT declared
+  }
+  EXPECT_TRUE(read_file(root / "memory.las") == read_file(root / "pieces.las"));
   fs::remove_all(root);
 }
 

@@ -20,6 +20,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,12 @@ public:
   const std::string& format() const { return m_format; }
   /// \returns the number of points of the file
   std::uint64_t number_of_points() const { return m_count; }
+  /// \returns for a LAS file, its scale, offset and coordinate system records (as
+  ///          `Point_set_read_result::las_georeference`); empty for the other formats
+  std::optional<Las_georeference> las_georeference() const
+  {
+    return m_format == "las" ? std::optional<Las_georeference>(m_las.georeference) : std::nullopt;
+  }
 
   /// Reads the coordinates of the points `first` to `first + count - 1`, as stored (no origin
   /// subtracted), into `xyz` (x, y, z of each point; replaced).

@@ -51,6 +51,10 @@ struct Point_set_read_result
   /// The names of the properties created in the point set besides the points, in order
   /// (for example `"normal"`, `"intensity"`, `"classification"`, `"red"`).
   std::vector<std::string> property_names;
+  /// For a LAS file, its scale, offset and coordinate system records: give them to
+  /// `write_las_point_set()` (named parameter `las_georeference`) to write the points as they were
+  /// stored; empty for the other formats.
+  std::optional<Las_georeference> las_georeference;
 };
 
 /*!
@@ -379,6 +383,7 @@ Point_set_read_result read_point_set(const std::string& filename, CGAL::Point_se
       internal::add_property(points, "blue", d.blue);
       for(const internal::Las_extra_bytes& e : d.extras)
         internal::add_extra_property(points, e);
+      result.las_georeference = d.georeference;
     } else {
       const internal::Kitti_data d = internal::read_kitti(filename);
       internal::bounding_box(d.xyz, lo, hi);

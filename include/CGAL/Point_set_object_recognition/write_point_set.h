@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <cstdint>
 #include <ostream>
 #include <string>
@@ -43,6 +44,10 @@ struct Write_las_point_set_options
   /// the names of classification codes, (code 0 to 255, name) pairs, written in the file's
   /// Classification Lookup record (a name keeps its first 15 characters)
   std::vector<std::pair<unsigned, std::string>> class_names;
+  /// the scale, offset and coordinate system records of the file (those of the LAS file the
+  /// points were read from: `Point_set_read_result::las_georeference`); none: millimetres from
+  /// an offset on a 100 m grid, no coordinate system record
+  std::optional<Las_georeference> las_georeference;
 };
 
 /*!
@@ -61,17 +66,19 @@ Write_las_point_set_options write_las_point_set_options(const NamedParameters& n
   Write_las_point_set_options o;
   o.local_origin = parameter_value(np, snp::local_origin_tag, o.local_origin);
   o.class_names = parameter_value(np, snp::class_names_tag, o.class_names);
+  o.las_georeference = parameter_value(np, snp::las_georeference_tag, o.las_georeference);
   return o;
 }
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-// The options of `np`, checked; the file's offsets: per axis the smallest coordinate written
-// (local origin added) rounded down to a multiple of 100 m.
+// The options of `np`, checked; the file's scale and offsets: those of its `las_georeference`,
+// else millimetres and per axis the smallest coordinate written (local origin added) rounded down
+// to a multiple of 100 m.
 template <typename Point, typename NamedParameters>
 Write_las_point_set_options checked_las_options(const CGAL::Point_set_3<Point>& points, const NamedParameters& np,
-                                                std::array<double, 3>& offset)
+                                                std::array<double, 3>& offset, std::array<double, 3>& scale)
 {
   const Write_las_point_set_options o = write_las_point_set_options(np);
   for(double c : o.local_origin)
@@ -80,6 +87,17 @@ Write_las_point_set_options checked_las_options(const CGAL::Point_set_3<Point>& 
   for(const auto& name : o.class_names)
     if(name.first > 255)
       throw Bad_input("write_las_point_set: class code " + std::to_string(name.first) + " is above 255");
+  scale = {{0.001, 0.001, 0.001}};
+  if(o.las_georeference) {
+    for(int c = 0; c < 3; ++c)
+      if(!(o.las_georeference->scale[c] > 0) || !std::isfinite(o.las_georeference->scale[c]) ||
+         !std::isfinite(o.las_georeference->offset[c]))
+        throw Bad_input("write_las_point_set: the georeference's scale must be positive, its scale and offset finite");
+    for(const Las_georeference::Record& r : o.las_georeference->crs_records)
+      if(r.data.size() > 65535)
+        throw Bad_input("write_las_point_set: a coordinate system record of more than 65,535 bytes");
+    scale = o.las_georeference->scale;
+  }
   offset = {{0, 0, 0}};
   bool first = true;
   for(typename CGAL::Point_set_3<Point>::Index i : points) {
@@ -94,6 +112,8 @@ Write_las_point_set_options checked_las_options(const CGAL::Point_set_3<Point>& 
   }
   for(int c = 0; c < 3; ++c)
     offset[c] = std::floor((offset[c] + o.local_origin[c]) / 100) * 100;
+  if(o.las_georeference)
+    offset = o.las_georeference->offset;
   return o;
 }
 
@@ -113,7 +133,8 @@ unsigned las_point_format(const CGAL::Point_set_3<Point>& points)
 Writes `points` to `os` (binary) as an uncompressed ASPRS LAS 1.4 file, point data format 7
 when the point set has `red`, `green` and `blue` properties of type `unsigned short`, else 6.
 Coordinates are stored in millimetres from an offset on a 100 m grid (per axis the smallest
-coordinate, rounded down), after `local_origin` is added back. The properties `intensity`
+coordinate, rounded down), after `local_origin` is added back, or with the scale and offset of
+`las_georeference`, whose coordinate system records are written too. The properties `intensity`
 (`unsigned short`), `classification`, `return_number`, `number_of_returns` (`unsigned char`),
 `gps_time` (`double`) and the colours fill the fields of the format (0, or 1 for the return
 number and the number of returns, when absent: what `read_point_set()` creates from a LAS file);
@@ -141,10 +162,19 @@ reads them back as properties. Properties of other types (normals among them) ar
     \cgalParamType{`std::vector<std::pair<unsigned, std::string>>`}
     \cgalParamDefault{none (no record)}
   \cgalParamNEnd
+  \cgalParamNBegin{las_georeference}
+    \cgalParamDescription{the scale and offset of the integer coordinates and the coordinate system
+                          records (written as VLRs of user id `LASF_Projection`) of the file: those
+                          of the LAS file read (`Point_set_read_result::las_georeference`), so that
+                          its points keep their stored integers and its coordinate system}
+    \cgalParamType{`Las_georeference`}
+    \cgalParamDefault{none: millimetres from an offset on a 100 m grid, no coordinate system record}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \throws CGAL::Shape_analysis::Bad_input if a coordinate or the local origin is not finite, a
-        point is more than 2,147 km from the offset, a class code is above 255, a return number
+        point does not fit 32-bit integers with the scale and offset (2,147 km from the offset in
+        millimetres), the georeference's scale is not positive or a record is above 64 KiB, a class code is above 255, a return number
         is above 15, more than 341 properties are to be written as extra bytes, or the stream
         fails; nothing is written to `os` before the checks pass
 */
@@ -152,10 +182,10 @@ template <typename Point, typename NamedParameters = parameters::Default_named_p
 void write_las_point_set(std::ostream& os, const CGAL::Point_set_3<Point>& points,
                          const NamedParameters& np = parameters::default_values())
 {
-  std::array<double, 3> offset;
-  const Write_las_point_set_options o = internal::checked_las_options(points, np, offset);
-  internal::write_las(os, points, {{0.001, 0.001, 0.001}}, offset, internal::las_point_format(points), o.local_origin,
-                      o.class_names);
+  std::array<double, 3> offset, scale;
+  const Write_las_point_set_options o = internal::checked_las_options(points, np, offset, scale);
+  internal::write_las(os, points, scale, offset, internal::las_point_format(points), o.local_origin, o.class_names,
+                      o.las_georeference ? &*o.las_georeference : nullptr);
   if(!os)
     throw Bad_input("write_las_point_set: cannot write the stream");
 }
@@ -178,10 +208,10 @@ template <typename Point, typename NamedParameters = parameters::Default_named_p
 void write_las_point_set(const std::string& filename, const CGAL::Point_set_3<Point>& points,
                          const NamedParameters& np = parameters::default_values())
 {
-  std::array<double, 3> offset;
-  const Write_las_point_set_options o = internal::checked_las_options(points, np, offset);
-  internal::write_las(filename, points, {{0.001, 0.001, 0.001}}, offset, internal::las_point_format(points),
-                      o.local_origin, o.class_names);
+  std::array<double, 3> offset, scale;
+  const Write_las_point_set_options o = internal::checked_las_options(points, np, offset, scale);
+  internal::write_las(filename, points, scale, offset, internal::las_point_format(points), o.local_origin,
+                      o.class_names, o.las_georeference ? &*o.las_georeference : nullptr);
 }
 
 /*!
@@ -191,7 +221,7 @@ A LAS 1.4 file written a piece at a time, as `write_las_point_set()` writes the 
 pieces, so that a scan larger than memory can be written (and by several processes, each with the
 records of its own pieces at their places in the file). The pieces are point sets with the same
 properties; the file's offset is that of the whole (its smallest coordinate rounded down to a
-multiple of 100 m, local origin added), given at construction. Write the header (`header()`, of
+multiple of 100 m, local origin added), given at construction, or that of `las_georeference`. Write the header (`header()`, of
 the `Summary` of every piece, merged) at the start of the file and the records of the pieces
 (`records()`) after it, in order: record `i` of the file at byte `header().size() + i *
 record_length()`.
@@ -228,8 +258,8 @@ public:
   /// \param layout a point set with the properties of the pieces (its points are not written)
   /// \param lowest the smallest coordinates of all the pieces' points (each axis), to choose the
   ///        file's offset as `write_las_point_set()` does
-  /// \param np an optional sequence of named parameters among `local_origin` and `class_names`,
-  ///        as for `write_las_point_set()`
+  /// \param np an optional sequence of named parameters among `local_origin`, `class_names` and
+  ///        `las_georeference`, as for `write_las_point_set()`
   /// \throws CGAL::Shape_analysis::Bad_input if `lowest`, the local origin or a class code is
   ///         not valid (as `write_las_point_set()`)
   template <typename NamedParameters = parameters::Default_named_parameters>
@@ -240,14 +270,15 @@ public:
     CGAL::Point_set_3<Point> one = layout;
     one.clear();
     one.insert(Point(lowest[0], lowest[1], lowest[2]));
-    m_options = internal::checked_las_options(one, np, m_offset);
+    m_options = internal::checked_las_options(one, np, m_offset, m_scale);
     m_format = internal::las_point_format(layout);
     const internal::Las_attributes<CGAL::Point_set_3<Point>> attributes(layout);
     m_record = internal::las_layout(m_format).size;
     for(const auto& e : attributes.extras)
       m_record += internal::las_extra_size(e.data_type);
     internal::Le_buffer vlrs;
-    m_vlrs_count = internal::las_vlrs(vlrs, attributes.extras, m_options.class_names, "write_las_point_set: ");
+    m_vlrs_count = internal::las_vlrs(vlrs, attributes.extras, m_options.class_names, "write_las_point_set: ",
+                                      m_options.las_georeference ? &*m_options.las_georeference : nullptr);
     m_vlrs = std::move(vlrs.bytes);
   }
 
@@ -268,7 +299,7 @@ public:
       throw Bad_input("write_las_point_set: a piece has other properties than the layout");
     std::vector<std::int32_t> q;
     std::uint64_t by_return[15] = {0};
-    internal::las_integer_coordinates(piece, attributes, {{0.001, 0.001, 0.001}}, m_offset, m_options.local_origin,
+    internal::las_integer_coordinates(piece, attributes, m_scale, m_offset, m_options.local_origin,
                                       m_format, "write_las_point_set: ", q, s.min, s.max, by_return);
     s.number_of_points = piece.size();
     for(int r = 0; r < 15; ++r)
@@ -290,8 +321,9 @@ public:
     for(int r = 0; r < 15; ++r)
       by_return[r] = all.by_return[std::size_t(r)];
     internal::Le_buffer b;
-    internal::las_header_block(b, m_format, std::size_t(all.number_of_points), by_return, {{0.001, 0.001, 0.001}},
-                               m_offset, all.min, all.max, m_record, {m_vlrs_count, m_vlrs.size()});
+    internal::las_header_block(b, m_format, std::size_t(all.number_of_points), by_return, m_scale, m_offset, all.min,
+                               all.max, m_record, {m_vlrs_count, m_vlrs.size()},
+                               internal::las_wkt(m_options.las_georeference ? &*m_options.las_georeference : nullptr));
     b.bytes.insert(b.bytes.end(), m_vlrs.begin(), m_vlrs.end());
     return b.bytes;
   }
@@ -300,6 +332,7 @@ private:
   CGAL::Point_set_3<Point> m_layout;
   Write_las_point_set_options m_options;
   std::array<double, 3> m_offset{{0, 0, 0}};
+  std::array<double, 3> m_scale{{0.001, 0.001, 0.001}};
   unsigned m_format = 6;
   std::size_t m_record = 0;
   std::uint32_t m_vlrs_count = 0;

@@ -90,6 +90,7 @@ namespace internal_np {
   X(local_origin_t, local_origin_tag, local_origin)                                  \
   X(shift_to_local_origin_t, shift_to_local_origin_tag, shift_to_local_origin) \
   X(class_names_t, class_names_tag, class_names)                                     \
+  X(las_georeference_t, las_georeference_tag, las_georeference)                      \
   X(segmentation_method_t, segmentation_method_tag, segmentation_method)             \
   X(background_radius_t, background_radius_tag, background_radius)                   \
   X(foreground_height_t, foreground_height_tag, foreground_height)                   \

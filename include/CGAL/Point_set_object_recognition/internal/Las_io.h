@@ -18,6 +18,7 @@
 // "LASF_Spec", record id 4; 192-byte descriptors: data type, options, name, ..., scale, offset)
 // describes are read as attributes; undescribed ones are skipped.
 
+#include <CGAL/Point_set_object_recognition/Las_georeference.h>
 #include <CGAL/Point_set_object_recognition/internal/Binary_io.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
 
@@ -70,6 +71,9 @@ struct Las_header
   std::uint16_t record_length = 0;
   std::uint64_t number_of_points = 0;
   std::array<double, 3> scale{{1, 1, 1}}, offset{{0, 0, 0}}, min{{0, 0, 0}}, max{{0, 0, 0}};
+  std::uint16_t global_encoding = 0;
+  std::uint64_t start_of_evlrs = 0;  // LAS 1.4: the extended VLRs after the points (0: none)
+  std::uint32_t number_of_evlrs = 0;
 };
 
 // An attribute stored in the extra bytes of the records: its name, data type (1 to 10: unsigned
@@ -120,6 +124,7 @@ struct Las_data
   std::vector<double> gps_time;
   std::vector<std::uint16_t> red, green, blue;
   std::vector<Las_extra_bytes> extras; // the described extra bytes, in record order
+  Las_georeference georeference;       // scale, offset and CRS records of the header
 };
 
 // The error about the LAS file `filename`.
@@ -138,6 +143,11 @@ inline Las_header las_header_fields(const unsigned char* h, unsigned& format_byt
   hd.header_size = le_u16(h + 94);
   hd.offset_to_point_data = le_u32(h + 96);
   hd.number_of_vlrs = le_u32(h + 100);
+  hd.global_encoding = le_u16(h + 6);
+  if(hd.version_minor >= 4 && hd.header_size >= 375) {
+    hd.start_of_evlrs = le_u64(h + 235);
+    hd.number_of_evlrs = le_u32(h + 243);
+  }
   format_byte = h[104];
   hd.record_length = le_u16(h + 105);
   legacy_count = le_u32(h + 107);
@@ -276,8 +286,52 @@ inline std::string fixed_text(const unsigned char* p, std::size_t n)
   return std::string(reinterpret_cast<const char*>(p), reinterpret_cast<const char*>(std::find(p, p + n, 0)));
 }
 
-// The extra bytes that the Extra Bytes VLR of the file (`in`, of `size` bytes) describes, in
-// `data.extras`; the other VLRs are skipped.
+// Appends the coordinate system record `id` (its `length` bytes next in `in`) to `data.georeference`.
+inline void read_las_crs_record(std::ifstream& in, std::uint16_t id, const std::string& description,
+                                std::uint64_t length, Las_data& data, const std::string& filename)
+{
+  Las_georeference::Record r;
+  r.record_id = id;
+  r.description = description;
+  r.data.resize(static_cast<std::size_t>(length));
+  if(!in.read(reinterpret_cast<char*>(r.data.data()), static_cast<std::streamsize>(length)))
+    throw las_error(filename, "cannot read the coordinate system record");
+  data.georeference.crs_records.push_back(std::move(r));
+}
+
+// The CRS records among the extended VLRs of the LAS 1.4 file `in` (after its points), appended
+// to `data.georeference`; a record too large for a VLR (64 KiB) is an error, as the file could not
+// be written again with it.
+inline void read_las_crs_evlrs(std::ifstream& in, Las_data& data, const std::string& filename)
+{
+  const Las_header& hd = data.header;
+  if(hd.number_of_evlrs == 0 || hd.start_of_evlrs == 0)
+    return;
+  const std::uint64_t size = file_size(in);
+  std::uint64_t at = hd.start_of_evlrs;
+  for(std::uint32_t v = 0; v < hd.number_of_evlrs; ++v) {
+    unsigned char h[60];
+    in.clear();
+    in.seekg(static_cast<std::streamoff>(at));
+    if(at > size || size - at < 60 || !in.read(reinterpret_cast<char*>(h), 60))
+      throw las_error(filename, "extended variable length record " + std::to_string(v) + " runs past the end");
+    const std::uint64_t length = le_u64(h + 20);
+    if(length > size - at - 60)
+      throw las_error(filename, "extended variable length record " + std::to_string(v) + " runs past the end");
+    if(fixed_text(h + 2, 16) == "LASF_Projection") {
+      if(length > 65535)
+        throw las_error(filename, "a coordinate system record of " + std::to_string(length) +
+                                      " bytes (at most 65,535 are kept)");
+      read_las_crs_record(in, le_u16(h + 18), fixed_text(h + 28, 32), length, data, filename);
+    }
+    at += 60 + length;
+  }
+  in.clear();
+}
+
+// The extra bytes that the Extra Bytes VLR of the file (`in`) describes, in `data.extras`, and
+// its scale, offset and CRS records (VLRs and extended VLRs), in `data.georeference`; the other
+// records are skipped.
 inline void read_las_extra_bytes(std::ifstream& in, Las_data& data, const std::string& filename)
 {
   const Las_header& hd = data.header;
@@ -316,9 +370,15 @@ inline void read_las_extra_bytes(std::ifstream& in, Las_data& data, const std::s
         }
         offset += size;
       }
+    } else if(user == "LASF_Projection") {
+      read_las_crs_record(in, le_u16(h + 18), fixed_text(h + 22, 32), length, data, filename);
     }
     at += 54 + length;
   }
+  read_las_crs_evlrs(in, data, filename);
+  data.georeference.scale = hd.scale;
+  data.georeference.offset = hd.offset;
+  data.georeference.wkt = (hd.global_encoding & 0x10) != 0;
 }
 
 // Reads the uncompressed LAS file `filename`; throws Bad_input with a one-line message on a file

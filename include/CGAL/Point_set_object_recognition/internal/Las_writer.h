@@ -155,14 +155,15 @@ void las_integer_coordinates(const CGAL::Point_set_3<Point>& points, const Las_a
 inline void las_header_block(Le_buffer& b, unsigned point_format, std::size_t n, const std::uint64_t (&by_return)[15],
                              const std::array<double, 3>& scale, const std::array<double, 3>& offset,
                              const std::array<double, 3>& lo, const std::array<double, 3>& hi,
-                             std::size_t record_length, const std::pair<std::uint32_t, std::size_t>& vlrs)
+                             std::size_t record_length, const std::pair<std::uint32_t, std::size_t>& vlrs,
+                             bool wkt = true)
 {
   const Las_format_layout& layout = las_layout(point_format);
   const bool extended = layout.extended;
   const unsigned header_size = extended ? 375 : 227;
   b.text("LASF", 4);
   b.u16(0);                    // file source id
-  b.u16(extended ? 0x10 : 0);  // global encoding (WKT bit, required with formats 6-10)
+  b.u16(extended && wkt ? 0x10 : 0);  // global encoding (WKT bit, of formats 6-10)
   b.zeros(16);                 // project GUID
   b.u8(1);
   b.u8(extended ? 4 : 2);
@@ -244,11 +245,12 @@ void append_las_record(Le_buffer& b, const Las_attributes<Point_set>& a, typenam
   }
 }
 
-// A variable length record of the LAS specification's own user id.
-inline void las_vlr(Le_buffer& b, unsigned record_id, const Le_buffer& payload, const std::string& description)
+// A variable length record (of the LAS specification's own user id unless `user` is given).
+inline void las_vlr(Le_buffer& b, unsigned record_id, const Le_buffer& payload, const std::string& description,
+                    const std::string& user = "LASF_Spec")
 {
   b.u16(0);
-  b.text("LASF_Spec", 16);
+  b.text(user, 16);
   b.u16(record_id);
   b.u16(static_cast<unsigned>(payload.bytes.size()));
   b.text(description, 32);
@@ -256,10 +258,11 @@ inline void las_vlr(Le_buffer& b, unsigned record_id, const Le_buffer& payload, 
 }
 
 // The VLRs of write_las(): the Extra Bytes record describing `extras`, the Classification Lookup
-// record naming the classes; their number.
+// record naming the classes, the coordinate system records of `geo` (if any); their number.
 template <typename Field>
 std::uint32_t las_vlrs(Le_buffer& b, const std::vector<Field>& extras,
-                       const std::vector<std::pair<unsigned, std::string>>& class_names, const std::string& who)
+                       const std::vector<std::pair<unsigned, std::string>>& class_names, const std::string& who,
+                       const Las_georeference* geo = nullptr)
 {
   std::uint32_t count = 0;
   if(!extras.empty()) {
@@ -290,7 +293,23 @@ std::uint32_t las_vlrs(Le_buffer& b, const std::vector<Field>& extras,
     las_vlr(b, 0, d, "Classification lookup");
     ++count;
   }
+  for(std::size_t r = 0; geo && r < geo->crs_records.size(); ++r) {
+    const Las_georeference::Record& record = geo->crs_records[r];
+    if(record.data.size() > 65535)
+      throw CGAL::Shape_analysis::Bad_input(who + "a coordinate system record of more than 65,535 bytes");
+    Le_buffer d;
+    d.bytes = record.data;
+    las_vlr(b, record.record_id, d, record.description, "LASF_Projection");
+    ++count;
+  }
   return count;
+}
+
+// Whether a file written with `geo` declares a WKT coordinate system (global encoding bit 4):
+// without CRS records, or when they are WKT.
+inline bool las_wkt(const Las_georeference* geo)
+{
+  return geo == nullptr || geo->crs_records.empty() || geo->wkt;
 }
 
 // Writes `points` as an uncompressed LAS file to `sink` (called with consecutive byte blocks):
@@ -310,7 +329,8 @@ std::uint32_t las_vlrs(Le_buffer& b, const std::vector<Field>& extras,
 template <typename Point, typename Sink>
 void write_las_to(const Sink& sink, const CGAL::Point_set_3<Point>& points, const std::array<double, 3>& scale,
                   const std::array<double, 3>& offset, unsigned point_format, const std::array<double, 3>& origin,
-                  const std::vector<std::pair<unsigned, std::string>>& class_names, const std::string& who)
+                  const std::vector<std::pair<unsigned, std::string>>& class_names, const std::string& who,
+                  const Las_georeference* geo = nullptr)
 {
   typedef CGAL::Shape_analysis::Bad_input Bad_input;
   typedef CGAL::Point_set_3<Point> Point_set;
@@ -331,13 +351,13 @@ void write_las_to(const Sink& sink, const CGAL::Point_set_3<Point>& points, cons
   std::uint64_t by_return[15] = {0};
   las_integer_coordinates(points, attributes, scale, offset, origin, point_format, who, q, lo, hi, by_return);
   Le_buffer vlrs;
-  const std::uint32_t number_of_vlrs = las_vlrs(vlrs, attributes.extras, class_names, who);
+  const std::uint32_t number_of_vlrs = las_vlrs(vlrs, attributes.extras, class_names, who, geo);
   std::size_t record_length = las_layout(point_format).size;
   for(const auto& e : attributes.extras)
     record_length += las_extra_size(e.data_type);
   Le_buffer b;
   las_header_block(b, point_format, n, by_return, scale, offset, lo, hi, record_length,
-                   {number_of_vlrs, vlrs.bytes.size()});
+                   {number_of_vlrs, vlrs.bytes.size()}, las_wkt(geo));
   b.bytes.insert(b.bytes.end(), vlrs.bytes.begin(), vlrs.bytes.end());
   sink(b.bytes);
   b.bytes.clear();
@@ -359,7 +379,8 @@ template <typename Point>
 void write_las(const std::string& filename, const CGAL::Point_set_3<Point>& points,
                const std::array<double, 3>& scale, const std::array<double, 3>& offset,
                unsigned point_format = 3, const std::array<double, 3>& origin = {{0, 0, 0}},
-               const std::vector<std::pair<unsigned, std::string>>& class_names = {})
+               const std::vector<std::pair<unsigned, std::string>>& class_names = {},
+               const Las_georeference* geo = nullptr)
 {
   const std::string who = filename + ": write_las: ";
   std::unique_ptr<Atomic_output_file> out;
@@ -368,7 +389,7 @@ void write_las(const std::string& filename, const CGAL::Point_set_3<Point>& poin
                    out.reset(new Atomic_output_file(filename));
                  out->write(bytes);
                },
-               points, scale, offset, point_format, origin, class_names, who);
+               points, scale, offset, point_format, origin, class_names, who, geo);
   out->commit();
 }
 
@@ -376,12 +397,13 @@ void write_las(const std::string& filename, const CGAL::Point_set_3<Point>& poin
 template <typename Point>
 void write_las(std::ostream& out, const CGAL::Point_set_3<Point>& points, const std::array<double, 3>& scale,
                const std::array<double, 3>& offset, unsigned point_format, const std::array<double, 3>& origin,
-               const std::vector<std::pair<unsigned, std::string>>& class_names = {})
+               const std::vector<std::pair<unsigned, std::string>>& class_names = {},
+               const Las_georeference* geo = nullptr)
 {
   write_las_to([&](const std::vector<unsigned char>& bytes) {
                  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
                },
-               points, scale, offset, point_format, origin, class_names, "write_las: ");
+               points, scale, offset, point_format, origin, class_names, "write_las: ", geo);
 }
 
 } // namespace internal
