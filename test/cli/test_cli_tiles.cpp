@@ -4,10 +4,11 @@
 // `points recognize --work-dir` (out of core): the scan read piece by piece and the tiles
 // processed from the work folder give the bytes of the run that holds the scan in memory; a
 // second run reuses every finished tile; runs killed (SIGKILL) at random moments, three times in
-// a row, then run to their end, give the same bytes. With MPI: the ranks of `mpirun -np 2` and
-// `-np 3` give the same bytes; a rank that fails makes the job fail with one message and no
-// output, and the job run again finishes it; whole jobs killed (SIGKILL to mpirun and its ranks)
-// three times resume to the same bytes. The tool is run as a process on a generated street.
+// a row, then run to their end, give the same bytes; --only-objects and a LAS scan's georeference
+// as in memory. With MPI: the ranks of `mpirun -np 2` (also with --only-objects) and `-np 3` give
+// the same bytes; a rank that fails makes the job fail with one message and no output, and the
+// job run again finishes it; whole jobs killed (SIGKILL to mpirun and its ranks) three times
+// resume to the same bytes. The tool is run as a process on a generated street.
 
 #include <gtest/gtest.h>
 
@@ -456,6 +457,16 @@ TEST_F(TilesTest, RanksGiveTheSameBytes)
       ASSERT_TRUE(run_tool(las_in_memory));
       ASSERT_EQ(wait_for(start_program(SHAPE_ANALYSIS_MPIRUN, with_ranks(3, las), launch)), 0) << read_file(errors);
       EXPECT_TRUE(read_file(dir / "objects.las") == read_file(root / "las_memory" / "objects.las"));
+    }
+    if(ranks == 2) { // --only-objects: each rank's records after those of the ranks before
+      std::vector<std::string> only = recognize(dir, (dir / "work").string()), only_in_memory = recognize(root / "only_memory", "");
+      only[9] = (dir / "only.ply").string();
+      only_in_memory[9] = (root / "only_memory" / "only.ply").string();
+      only.push_back("--only-objects");
+      only_in_memory.push_back("--only-objects");
+      ASSERT_TRUE(run_tool(only_in_memory));
+      ASSERT_EQ(wait_for(start_program(SHAPE_ANALYSIS_MPIRUN, with_ranks(2, only), launch)), 0) << read_file(errors);
+      EXPECT_TRUE(read_file(dir / "only.ply") == read_file(root / "only_memory" / "only.ply"));
     }
     EXPECT_EQ(read_file(dir / "locations.csv"), locations) << ranks << " ranks";
     const std::string report = read_file(dir / "report.json");
