@@ -51,6 +51,7 @@ struct Scene_options
   // Road users and vegetation per 100 m; negative: the sensor's default (none for profile).
   double pedestrians = -1, cyclists = -1, lane_cars = -1, vegetation = -1;
   std::size_t segment_points = 10000000; // above twice this, the street is made in segments
+  bool segment_files = false;            // each segment a file of its own
   std::string streets, crs = "EPSG:32618";  // the street's OpenStreetMap file, its UTM zone
   std::vector<double> scan_origin{583000, 4507000}; // the UTM coordinates of the scan's (0, 0)
   bool quiet = false, verbose = false;
@@ -86,11 +87,15 @@ int run_scene_in_segments(const Scene_options& o, const SAS::Urban_scene_options
                       "segments, without a map");
   Stopwatch work;
   Segmented_scene g;
-  outputs.stage(o.output, true, [&](std::ostream& out) {
-    g = generate_in_segments(so, out, lower_extension(o.output) == ".las",
-                             "written by shape_analysis points " + o.command + " (CGAL Global Shape Analysis)",
-                             o.segment_points, progress);
-  });
+  const bool las = lower_extension(o.output) == ".las";
+  const std::string comment = "written by shape_analysis points " + o.command + " (CGAL Global Shape Analysis)";
+  if(o.segment_files) {
+    g = generate_segment_files(so, o.segment_points, progress, outputs, o.output, comment);
+  } else {
+    outputs.stage(o.output, true, [&](std::ostream& out) {
+      g = generate_in_segments(so, out, las, comment, o.segment_points, progress);
+    });
+  }
   const double seconds = work.seconds();
   if(!o.objects.empty())
     outputs.stage(o.objects, false, [&](std::ostream& out) { out << SAS::to_text(objects_json(g.objects, g.scanned)) << "\n"; });
@@ -157,6 +162,9 @@ int run_scene(const Scene_options& o)
   if(o.segment_points < 1000)
     throw Usage_error("--segment-points must be at least 1000");
   const bool in_segments = so.target_points > 2 * o.segment_points && !rotating;
+  if(o.segment_files && !in_segments)
+    throw Usage_error("--segment-files: the street is made in segments only above twice --segment-points points "
+                      "(--sensor profile)");
   const double longest = in_segments ? 1e5 * double(so.target_points / o.segment_points + 1) : 1e5;
   if(!(so.street_length >= 10 && so.street_length <= longest))
     throw Usage_error("--length must be between 10 and " + std::to_string(std::size_t(longest)) + " m");
@@ -566,6 +574,11 @@ void add_points_command(CLI::App& app, std::function<int()>& run)
                       "this many points, each a street of its own (its own seed) after the previous one along x, "
                       "generated and written one at a time: memory holds one segment (10^7 points: 2 GB)")
       ->capture_default_str();
+    if(s->command == "generate")
+      scene->add_flag("--segment-files", s->segment_files,
+                      "With segments, each in a file of its own (a folder of tiles, as a city comes): the "
+                      "output's name with _0000, _0001... before its extension; 'points recognize' reads the "
+                      "folder as one scan");
     scene->add_option("--objects-per-100m", so.objects_per_100m, "Objects per 100 m of street")->capture_default_str();
     scene->add_option("--noise", so.range_noise, "Standard deviation of the range noise in metres")->capture_default_str();
     scene->add_flag("--airborne", so.airborne, "Add an airborne pass (points on a grid from above)");

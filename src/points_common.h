@@ -118,6 +118,12 @@ struct Segmented_scene
 Segmented_scene generate_in_segments(const CGAL::Shape_analysis_support::Urban_scene_options& so, std::ostream& out,
                                      bool las, const std::string& comment, std::size_t segment_points,
                                      Progress& progress);
+// The same, each segment staged in `outputs` as a file of its own instead, `output`'s name with
+// _0000, _0001... before its extension (LAS files with one offset, so that their points one after
+// the other are those of the single file).
+Segmented_scene generate_segment_files(const CGAL::Shape_analysis_support::Urban_scene_options& so,
+                                       std::size_t segment_points, Progress& progress, Output_files& outputs,
+                                       const std::string& output, const std::string& comment);
 
 // The horizontal box of a scan: xmin, ymin, xmax, ymax (points_train_command.cpp).
 std::array<double, 4> horizontal_bbox(const CGAL::Point_set_3<Point_3>& points);

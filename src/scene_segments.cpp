@@ -53,13 +53,94 @@ CGAL::Point_set_3<Point_3> scan_points(const SAS::Urban_scan& scan)
   return ps;
 }
 
+namespace {
+
+// The number of segments for `points` points in segments of `segment_points`.
+std::size_t segments_for(std::size_t points, std::size_t segment_points)
+{
+  return (points + segment_points - 1) / segment_points;
+}
+
+// The LAS offset of generated scans: below any point (x from 0, y and z above -1 km).
+PSOR::Las_georeference generated_scan_georeference()
+{
+  PSOR::Las_georeference g;
+  g.offset = {{0, -1000, -1000}};
+  return g;
+}
+
+// Segment s of the street (a street of its own, moved after the previous ones along x), its
+// objects and counts added to `result`: its scanned points.
+CGAL::Point_set_3<Point_3> scan_segment(const SAS::Urban_scene_options& so, std::size_t s, Segmented_scene& result,
+                                        Progress& progress)
+{
+  const std::size_t segments = result.segments;
+  const double length = so.street_length / double(segments);
+  SAS::Urban_scene_options o = so;
+  o.street_length = length;
+  o.target_points = so.target_points / segments + (s + 1 == segments ? so.target_points % segments : 0);
+  o.seed = so.seed * 1000003 + s; // each segment a street of its own
+  progress.stage("segment " + std::to_string(s + 1) + " of " + std::to_string(segments) + ": " +
+                 std::to_string(int(length)) + " m, " + std::to_string(o.target_points) + " points");
+  const SAS::Urban_scene scene = SAS::make_urban_scene(o);
+  SAS::Urban_scan scan = SAS::scan_urban_scene(scene, o);
+  const double shift = double(s) * length;
+  const int first_id = int(result.objects.size());
+  for(SAS::Urban_object b : scene.objects) { // moved and renumbered as their points
+    b.x += shift;
+    b.id += first_id;
+    b.bbox = CGAL::Bbox_3(b.bbox.xmin() + shift, b.bbox.ymin(), b.bbox.zmin(), b.bbox.xmax() + shift, b.bbox.ymax(),
+                          b.bbox.zmax());
+    result.objects.push_back(b);
+  }
+  for(const SAS::Urban_scan_point& p : scan.points)
+    if(p.instance > 0) {
+      ++result.object_points;
+      ++result.scanned[p.instance + first_id];
+    }
+  result.triangles += scene.triangles.size();
+  move_segment(scan, shift, first_id);
+  CGAL::Point_set_3<Point_3> ps = scan_points(scan);
+  result.number_of_points += ps.size();
+  return ps;
+}
+
+} // namespace
+
+Segmented_scene generate_segment_files(const SAS::Urban_scene_options& so, std::size_t segment_points,
+                                       Progress& progress, Output_files& outputs, const std::string& output,
+                                       const std::string& comment)
+{
+  Segmented_scene result;
+  result.segments = segments_for(so.target_points, segment_points);
+  const std::size_t dot = output.size() - lower_extension(output).size();
+  std::vector<std::string> names;
+  for(std::size_t s = 0; s < result.segments; ++s) {
+    std::string number = std::to_string(s);
+    number.insert(0, std::max<std::size_t>(std::to_string(result.segments - 1).size(), 4) - number.size(), '0');
+    names.push_back(output.substr(0, dot) + "_" + number + output.substr(dot));
+    outputs.add_output(names.back(), "scanned segment", {".ply", ".las"});
+  }
+  for(std::size_t s = 0; s < result.segments; ++s) {
+    const CGAL::Point_set_3<Point_3> ps = scan_segment(so, s, result, progress);
+    outputs.stage(names[s], true, [&](std::ostream& out) {
+      if(lower_extension(output) == ".las") {
+        PSOR::write_las_point_set(out, ps, PSOR::parameters::las_georeference(generated_scan_georeference()));
+        return;
+      }
+      CGAL::IO::set_mode(out, CGAL::IO::BINARY);
+      if(!CGAL::IO::write_PLY(out, ps, comment))
+        throw Cli_error("cannot write " + names[s]);
+    });
+  }
+  return result;
+}
+
 Segmented_scene generate_in_segments(const SAS::Urban_scene_options& so, std::ostream& out, bool las,
                                      const std::string& comment, std::size_t segment_points_wanted, Progress& progress)
 {
-  const std::size_t segments = (so.target_points + segment_points_wanted - 1) / segment_points_wanted;
-  const double length = so.street_length / double(segments);
   Segmented_scene result;
-  result.segments = segments;
+  result.segments = segments_for(so.target_points, segment_points_wanted);
   // PLY: the header of the first segment, its count left room for the whole's and rewritten at
   // the end. LAS: a header of the right size written at the end (Las_point_set_pieces).
   std::string ply_header;
@@ -67,36 +148,12 @@ Segmented_scene generate_in_segments(const SAS::Urban_scene_options& so, std::os
   const std::string room(20, ' ');
   std::unique_ptr<PSOR::Las_point_set_pieces<Point_3>> las_pieces;
   PSOR::Las_point_set_pieces<Point_3>::Summary summary;
-  for(std::size_t s = 0; s < segments; ++s) {
-    SAS::Urban_scene_options o = so;
-    o.street_length = length;
-    o.target_points = so.target_points / segments + (s + 1 == segments ? so.target_points % segments : 0);
-    o.seed = so.seed * 1000003 + s; // each segment a street of its own
-    progress.stage("segment " + std::to_string(s + 1) + " of " + std::to_string(segments) + ": " +
-                   std::to_string(int(length)) + " m, " + std::to_string(o.target_points) + " points");
-    const SAS::Urban_scene scene = SAS::make_urban_scene(o);
-    SAS::Urban_scan scan = SAS::scan_urban_scene(scene, o);
-    const double shift = double(s) * length;
-    const int first_id = int(result.objects.size());
-    for(SAS::Urban_object b : scene.objects) { // moved and renumbered as their points
-      b.x += shift;
-      b.id += first_id;
-      b.bbox = CGAL::Bbox_3(b.bbox.xmin() + shift, b.bbox.ymin(), b.bbox.zmin(), b.bbox.xmax() + shift, b.bbox.ymax(),
-                            b.bbox.zmax());
-      result.objects.push_back(b);
-    }
-    for(const SAS::Urban_scan_point& p : scan.points)
-      if(p.instance > 0) {
-        ++result.object_points;
-        ++result.scanned[p.instance + first_id];
-      }
-    result.triangles += scene.triangles.size();
-    move_segment(scan, shift, first_id);
-    const CGAL::Point_set_3<Point_3> ps = scan_points(scan);
-    result.number_of_points += ps.size();
+  for(std::size_t s = 0; s < result.segments; ++s) {
+    const CGAL::Point_set_3<Point_3> ps = scan_segment(so, s, result, progress);
     if(las) {
-      if(!las_pieces) { // the offset: below any point (x from 0, y and z above -1 km)
-        las_pieces = std::make_unique<PSOR::Las_point_set_pieces<Point_3>>(ps, std::array<double, 3>{{0, -1000, -1000}});
+      if(!las_pieces) {
+        las_pieces = std::make_unique<PSOR::Las_point_set_pieces<Point_3>>(
+          ps, std::array<double, 3>{{0, 0, 0}}, PSOR::parameters::las_georeference(generated_scan_georeference()));
         out.write(std::string(las_pieces->header({}).size(), '\0').data(), std::streamsize(las_pieces->header({}).size()));
       }
       std::vector<unsigned char> records;

@@ -306,7 +306,8 @@ TEST_F(TilesTest, KeepGoingLeavesOutAFailingTileAndTheNextRunDoesIt)
 }
 
 // `points generate` above twice --segment-points: segments, each a street of its own after the
-// previous one, written one at a time into one PLY or LAS file; the same bytes for the same seed.
+// previous one, written one at a time into one PLY or LAS file (or a file each); the same bytes for
+// the same seed.
 TEST(Generator, ManyPointsAreWrittenSegmentBySegment)
 {
   const fs::path root = fs::temp_directory_path() / ("shape_analysis_segments_" + std::to_string(::getpid()));
@@ -347,6 +348,29 @@ TEST(Generator, ManyPointsAreWrittenSegmentBySegment)
     EXPECT_EQ(report_number(read_file(r), "number_of_points"), n) << name;
     EXPECT_NE(read_file(r).find("\"location\""), std::string::npos) << name;
   }
+  // --segment-files: a file per segment, whose records one after the other are c.las's; the folder
+  // recognized as one scan finds the same objects.
+  fs::create_directories(root / "tiles");
+  std::vector<std::string> files = generate("tiles/d.las");
+  files.push_back("--segment-files");
+  ASSERT_TRUE(run_tool(files));
+  const auto records = [](const std::string& las) {
+    std::uint32_t data = 0;
+    std::memcpy(&data, las.data() + 96, 4);
+    return las.substr(data);
+  };
+  std::string joined;
+  for(const std::string name : {"d_0000.las", "d_0001.las", "d_0002.las"})
+    joined += records(read_file(root / "tiles" / name));
+  EXPECT_FALSE(fs::exists(root / "tiles" / "d_0003.las"));
+  EXPECT_TRUE(joined == records(read_file(root / "c.las")));
+  for(const std::string scan : {(root / "c.las").string(), (root / "tiles").string()})
+    ASSERT_TRUE(run_tool({"points", "recognize", scan, "-q", "-o", (root / "o.las").string(), "--locations",
+                          (root / (scan == (root / "c.las").string() ? "c.csv" : "d.csv")).string(), "--work-dir",
+                          (root / "work_d").string()}));
+  EXPECT_EQ(read_file(root / "c.csv"), read_file(root / "d.csv"));
+  // Without segments, --segment-files is refused.
+  EXPECT_FALSE(run_tool({"points", "generate", "--points", "5000", "-q", "-o", (root / "e.las").string(), "--segment-files"}));
   fs::remove_all(root);
 }
 
