@@ -107,7 +107,8 @@ bool reserve(const std::string& path, std::uint64_t size)
 
 // Writes `bytes` at `offset` of the file `path`: through a mapping of the file when its blocks are
 // reserved up to there (reserve(); threads and ranks then write side by side without the file's
-// write lock: twice to three times faster here), else with pwrite().
+// write lock: 15.9 s instead of 16.9 s for the 4.1 GB of a 10^8-point output here), else with
+// pwrite().
 void write_at(const std::string& path, std::uint64_t offset, const char* bytes, std::size_t size)
 {
   const int fd = ::open(path.c_str(), O_RDWR | O_CLOEXEC);

@@ -212,7 +212,8 @@ void stage_objects_file(Output_files& outputs, const std::string& path, const st
 }
 
 void stage_object_points_file(Output_files& outputs, const std::string& path, const std::string& input,
-                              const Point_set& points, const std::vector<int>& object, const std::string& command, const std::vector<int>& label, const std::string& comment,
+                              const Point_set& points, const std::vector<int>& object, const std::string& command,
+                              const std::vector<int>& label, const std::string& comment,
                               const std::vector<std::string>& class_names)
 {
   Point_set kept;
