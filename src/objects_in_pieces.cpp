@@ -54,7 +54,7 @@ Piece read_piece(const Scan_files& reader, const Recognition_in_tiles& m, const 
       const std::size_t i = std::size_t(first + k - m.first);
       p.object[k] = m.object[i], p.ground[k] = m.ground[i];
       if(!label.empty())
-        p.label[k] = label[i];
+        p.label[k] = m.object[i] >= 0 ? label[std::size_t(m.object[i])] : -1;
     }
   return p;
 }
@@ -273,9 +273,11 @@ void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path
   together(ranks, [&]() {
     const Piece one = read_piece(reader, m, label, 0, 1);
     if(las) {
+      // The layout first: it names the classes (`names`) that the header's lookup record lists.
+      const CGAL::Point_set_3<Point_3> layout =
+        objects_las_points(reader.filename(), one.points, one.object, one.ground, one.label, class_names, names);
       las_pieces = std::make_unique<PSOR::Las_point_set_pieces<Point_3>>(
-        objects_las_points(reader.filename(), one.points, one.object, one.ground, one.label, class_names, names),
-        m.lowest, PSOR::parameters::class_names(names).las_georeference(reader.las_georeference()));
+        layout, m.lowest, PSOR::parameters::class_names(names).las_georeference(reader.las_georeference()));
       header.assign(las_pieces->header({}).size(), '\0');
       record = las_pieces->record_length();
     } else {

@@ -268,13 +268,17 @@ int run_recognize(const Recognize_options& o)
   }
 
   progress.stage("writing " + o.output);
+  // With a model, the class of each point's object (out of core: of each object, 4 bytes per point
+  // spared).
   std::vector<int> label;
-  const std::vector<int>& objects_of = reader ? tiled.object : object;
-  if(model) {
-    label.assign(objects_of.size(), -1);
-    for(std::size_t k = 0; k < objects_of.size(); ++k)
-      if(objects_of[k] >= 0)
-        label[k] = int(r.labels[std::size_t(objects_of[k])]);
+  if(model && reader)
+    for(std::size_t c : r.labels)
+      label.push_back(int(c));
+  else if(model) {
+    label.assign(object.size(), -1);
+    for(std::size_t k = 0; k < object.size(); ++k)
+      if(object[k] >= 0)
+        label[k] = int(r.labels[std::size_t(object[k])]);
   }
   std::vector<std::string> class_names;
   if(model)

@@ -159,7 +159,8 @@ Recognition_in_tiles recognize_in_tiles(const Scan_files& reader, const std::str
 
 // Stages the segmented points of a scan read piece by piece as PLY or LAS (stage_objects_file()'s
 // content, the same bytes), pieces of `piece` points, each rank writing the records of its part of
-// the scan (`m.first`, `m.object`, `m.ground`; `label` as `m.object`) into the file that rank 0
+// the scan (`m.first`, `m.object`, `m.ground`; `label`: the class of each object, or empty) into
+// the file that rank 0
 // stages in `outputs`, with `threads` threads (collective). A PLY output of a binary PLY scan
 // whose records it extends is written from the scan's records (checked on the first piece). With
 // `only_objects`, only the points in an object are written, in order.

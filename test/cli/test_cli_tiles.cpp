@@ -430,6 +430,39 @@ TEST(LasOutput, KeepsTheScansGeoreference)
   fs::remove_all(root);
 }
 
+// With a model, the objects' classes out of core (a class per object, not per point) are those
+// of the run in memory: the same bytes, PLY and LAS.
+TEST(ClassifiedOutOfCore, GivesTheInMemoryBytes)
+{
+  const fs::path root = fs::temp_directory_path() / ("shape_analysis_classified_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root);
+  const std::string train = (root / "train.ply").string(), scan = (root / "scan.ply").string();
+  ASSERT_TRUE(run_tool({"points", "generate", "--points", "150000", "--length", "90", "--seed", "2", "-q", "-o", train,
+                        "--truth", (root / "truth.json").string()}));
+  ASSERT_TRUE(run_tool({"points", "train", train, "--labels", (root / "truth.json").string(), "-q", "-o",
+                        (root / "model.json").string()}));
+  ASSERT_TRUE(run_tool({"points", "generate", "--points", "150000", "--length", "90", "--seed", "3", "-q", "-o", scan}));
+  for(const std::string ext : {".ply", ".las"}) {
+    const auto recognize = [&](const std::string& name, const std::string& work) {
+      std::vector<std::string> args = {"points", "recognize", scan, "-q", "--tile-size", "20", "--threads", "2",
+                                       "--model", (root / "model.json").string(), "-o", (root / (name + ext)).string(),
+                                       "--locations", (root / (name + ext + ".csv")).string()};
+      if(!work.empty())
+        args.insert(args.end(), {"--work-dir", (root / work).string()});
+      return run_tool(args);
+    };
+    ASSERT_TRUE(recognize("memory", "")) << ext;
+    ASSERT_TRUE(recognize("pieces", "work" + ext)) << ext;
+    const std::string memory = read_file(root / ("memory" + ext));
+    EXPECT_GT(memory.size(), 150000u * 30) << ext;
+    EXPECT_TRUE(memory == read_file(root / ("pieces" + ext))) << ext;
+    EXPECT_EQ(read_file(root / ("memory" + ext + ".csv")), read_file(root / ("pieces" + ext + ".csv"))) << ext;
+    EXPECT_NE(read_file(root / ("memory" + ext + ".csv")).find("label"), std::string::npos) << ext;
+  }
+  fs::remove_all(root);
+}
+
 // One run at a time in a work folder: a second finds it locked and fails at once, with no output.
 TEST_F(TilesTest, AWorkFolderInUseIsRefused)
 {
