@@ -324,6 +324,9 @@ void stage_objects_file_in_pieces(Output_files& outputs, const std::string& path
       std::uint64_t at = out_first[j]; // the output's record of the piece's first point written
       for(std::uint64_t first = part_first(j); first < part_first(j + 1); first += piece) {
         const std::size_t count = std::size_t(std::min<std::uint64_t>(piece, part_first(j + 1) - first));
+        const auto values = m.object.begin() + std::ptrdiff_t(first - m.first);
+        if(only_objects && std::none_of(values, values + std::ptrdiff_t(count), [](int o) { return o >= 0; }))
+          continue; // nothing of the piece is written: not read
         Piece p = read_piece(reader, m, label, first, count, from_scan);
         std::vector<unsigned char> records;
         if(from_scan)

@@ -34,10 +34,6 @@
 #include <limits>
 #include <unordered_map>
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
 namespace shape_analysis_cli {
 
 namespace {

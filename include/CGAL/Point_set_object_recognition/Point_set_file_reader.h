@@ -215,7 +215,7 @@ private:
     m_las.header = internal::las_header_fields(h, format_byte, legacy_count);
     internal::check_las_header(m_las.header, format_byte, size, m_filename);
     internal::set_las_point_count(m_las.header, h, legacy_count, size, m_filename);
-    internal::read_las_extra_bytes(in, m_las, m_filename);
+    internal::read_las_vlrs(in, m_las, m_filename);
     m_count = m_las.header.number_of_points;
     m_record = m_las.header.record_length;
     m_data = m_las.header.offset_to_point_data;

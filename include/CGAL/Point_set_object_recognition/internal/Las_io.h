@@ -329,10 +329,10 @@ inline void read_las_crs_evlrs(std::ifstream& in, Las_data& data, const std::str
   in.clear();
 }
 
-// The extra bytes that the Extra Bytes VLR of the file (`in`) describes, in `data.extras`, and
-// its scale, offset and CRS records (VLRs and extended VLRs), in `data.georeference`; the other
-// records are skipped.
-inline void read_las_extra_bytes(std::ifstream& in, Las_data& data, const std::string& filename)
+// What the reader takes from the variable length records of the file (`in`): the extra bytes that
+// its Extra Bytes VLR describes, in `data.extras`, and its scale, offset and CRS records (VLRs and
+// extended VLRs), in `data.georeference`; the other records are skipped.
+inline void read_las_vlrs(std::ifstream& in, Las_data& data, const std::string& filename)
 {
   const Las_header& hd = data.header;
   std::uint64_t at = hd.header_size;
@@ -406,7 +406,7 @@ inline Las_data read_las(const std::string& filename)
   data.header = las_header_fields(h, format_byte, legacy_count);
   check_las_header(data.header, format_byte, size, filename);
   set_las_point_count(data.header, h, legacy_count, size, filename);
-  read_las_extra_bytes(in, data, filename);
+  read_las_vlrs(in, data, filename);
   read_las_records(in, data, filename);
   return data;
 }
