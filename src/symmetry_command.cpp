@@ -1,7 +1,7 @@
 // Copyright (c) 2026 CGAL Global Shape Analysis contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-// shape_analysis symmetry detect IN --report R.json [--output SUPPORT.ply]
+// shape_analysis symmetry detect IN [--rotational] --report R.json [--output SUPPORT.ply]
 // shape_analysis symmetry symmetrize IN [--plane a,b,c,d] --output OUT.off --map MAP.txt --report R.json
 // shape_analysis symmetry enhance IN --amount t [--plane a,b,c,d | --symmetric SYM.off] --output OUT.off
 // shape_analysis symmetry transfer IN [--colors IN_COLORS.ply] [--plane a,b,c,d] --output OUT.ply
@@ -11,6 +11,7 @@
 #include "symmetry_files.h"
 
 #include <CGAL/Surface_mesh_symmetrization/detect_reflective_symmetries.h>
+#include <CGAL/Surface_mesh_symmetrization/detect_rotational_symmetries.h>
 #include <CGAL/Surface_mesh_symmetrization/symmetrize.h>
 #include <CGAL/Surface_mesh_symmetrization/transfer_vertex_attribute.h>
 
@@ -34,6 +35,9 @@ namespace {
 struct Detect_options : Common_options
 {
   std::string output_ply;
+  bool rotational = false;
+  bool minimum_support_given = false; // (the rotations' default differs from the planes')
+  SMS::Detect_rotational_symmetries_options rotation;
 };
 
 struct Enhance_options : Symmetrize_command_options
@@ -62,8 +66,88 @@ std::string name_of(const std::map<std::string, Value>& names, Value value)
   return std::string();
 }
 
+// `symmetry detect --rotational`: the axes, their orders and supports.
+int run_detect_rotations(const Detect_options& o)
+{
+  Stopwatch total;
+  Progress progress("symmetry detect", o.quiet, o.verbose);
+  Output_files outputs;
+  outputs.add_input(o.input);
+  if(!o.output_ply.empty())
+    outputs.add_output(o.output_ply, "support mesh", {".ply"});
+  outputs.add_optional_output(o.report, "report", {".json"});
+  double read_seconds = 0;
+  const Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
+  progress.stage("detecting rotational symmetries of " + std::to_string(num_faces(input.mesh)) + " faces");
+  Stopwatch watch;
+  std::vector<SMS::Rotational_symmetry<Kernel>> found;
+  SMS::Detect_rotational_symmetries_options d = o.rotation;
+  d.number_of_samples = o.detection.number_of_samples;
+  d.random_seed = o.detection.random_seed;
+  d.number_of_threads = o.detection.number_of_threads;
+  d.maximum_number_of_symmetries = o.detection.maximum_number_of_symmetries;
+  d.support_tolerance = o.detection.support_tolerance;
+  if(o.minimum_support_given)
+    d.minimum_support = o.detection.minimum_support;
+  SMS::detect_rotational_symmetries(input.mesh, std::back_inserter(found),
+                                    SMS::parameters::number_of_samples(d.number_of_samples)
+                                      .random_seed(d.random_seed)
+                                      .number_of_threads(d.number_of_threads)
+                                      .maximum_number_of_symmetries(d.maximum_number_of_symmetries)
+                                      .maximum_order(d.maximum_order)
+                                      .minimum_support(d.minimum_support)
+                                      .support_tolerance(d.support_tolerance));
+  const double seconds = watch.seconds();
+  progress.done();
+  if(!o.output_ply.empty()) {
+    if(found.empty())
+      throw Cli_error("no rotational symmetry found: no support mesh to write");
+    progress.stage("writing " + o.output_ply);
+    const std::vector<double> support = per_input_face(input, found.front().support, 0.0);
+    outputs.stage(o.output_ply, true, [&](std::ostream& out) {
+      write_support_ply(out, input.points, input.triangles, support);
+    });
+  }
+  const auto order_text = [](std::size_t k) { return k == 0 ? std::string("revolution") : std::to_string(k) + "-fold"; };
+  if(!o.report.empty()) {
+    Json report = input_report("symmetry detect", o.input, input);
+    Json parameters = Json::object();
+    parameters["number_of_samples"] = d.number_of_samples;
+    parameters["random_seed"] = d.random_seed;
+    parameters["maximum_number_of_symmetries"] = d.maximum_number_of_symmetries;
+    parameters["maximum_order"] = d.maximum_order;
+    parameters["minimum_support"] = d.minimum_support;
+    parameters["support_tolerance"] = d.support_tolerance;
+    parameters["number_of_threads"] = d.number_of_threads;
+    report["parameters"] = parameters;
+    Json rotations = Json::array();
+    for(const auto& r : found) {
+      Json j = Json::object();
+      j["axis"] = Json::array({r.axis.x(), r.axis.y(), r.axis.z()});
+      j["point"] = Json::array({r.point.x(), r.point.y(), r.point.z()});
+      j["order"] = r.order; // 0: a surface of revolution
+      j["kind"] = order_text(r.order);
+      j["score"] = r.score;
+      j["support"] = r.support_fraction;
+      rotations.push_back(j);
+    }
+    report["rotations"] = rotations;
+    stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(),
+                 {{"support_mesh", o.output_ply}});
+  }
+  outputs.commit();
+  std::cout << o.input << ": " << found.size() << " rotational symmetr" << (found.size() == 1 ? "y" : "ies")
+            << " in " << seconds << " s\n";
+  for(const auto& r : found)
+    std::cout << "  " << order_text(r.order) << " about the axis through " << r.point << " along " << r.axis
+              << "  score " << r.score << "  support " << r.support_fraction << '\n';
+  return 0;
+}
+
 int run_detect(const Detect_options& o)
 {
+  if(o.rotational)
+    return run_detect_rotations(o);
   Stopwatch total;
   Progress progress("symmetry detect", o.quiet, o.verbose);
   Output_files outputs;
@@ -353,7 +437,8 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run)
 
   auto d = std::make_shared<Detect_options>();
   CLI::App* detect = symmetry->add_subcommand(
-    "detect", "Detect the planar reflective symmetries (global and partial), best first.");
+    "detect", "Detect the planar reflective symmetries (global and partial), or with --rotational the "
+              "rotational ones (k-fold axes, surfaces of revolution), best first.");
   add_common_options(detect, *d, false);
   detect->add_option("--report", d->report,
                      "JSON report: planes (unit normal n and offset d of n.x = d, coefficients "
@@ -365,9 +450,20 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run)
                      "Largest number of planes reported")
     ->capture_default_str();
   detect->add_option("--min-support", d->detection.minimum_support,
-                     "Smallest support fraction of a plane, in [0, 1]")
+                     "Smallest support fraction of a plane, in [0, 1] (of a rotation: default " +
+                       Json(d->rotation.minimum_support).dump() + ")")
     ->capture_default_str();
-  detect->callback([d, &run]() { run = [d]() { return run_detect(*d); }; });
+  detect->add_flag("--rotational", d->rotational,
+                   "Detect rotational symmetries instead of planes: the report's 'rotations' (axis, "
+                   "point, order: k of a k-fold symmetry or 0 for a surface of revolution, score, support)");
+  detect->add_option("--max-order", d->rotation.maximum_order, "With --rotational: the largest order k tried (2 to 360)")
+    ->capture_default_str();
+  detect->callback([d, detect, &run]() {
+    d->minimum_support_given = detect->count("--min-support") > 0;
+    if(!d->rotational && detect->count("--max-order") > 0)
+      throw CLI::ValidationError("--max-order", "needs --rotational");
+    run = [d]() { return run_detect(*d); };
+  });
 
   auto s = std::make_shared<Symmetrize_command_options>();
   CLI::App* sym = symmetry->add_subcommand(

@@ -56,6 +56,7 @@ namespace internal_np {
   X(prior_segment_maps_t, prior_segment_maps_tag, prior_segment_maps)                   \
   X(maximum_number_of_symmetries_t, maximum_number_of_symmetries_tag, maximum_number_of_symmetries) \
   X(minimum_support_t, minimum_support_tag, minimum_support)                         \
+  X(maximum_order_t, maximum_order_tag, maximum_order)                               \
   X(support_tolerance_t, support_tolerance_tag, support_tolerance)                   \
   X(support_weighting_t, support_weighting_tag, support_weighting)                   \
   X(shape_weight_t, shape_weight_tag, shape_weight)                                  \

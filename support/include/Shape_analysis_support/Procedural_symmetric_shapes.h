@@ -75,6 +75,40 @@ inline Procedural_mesh symmetric_blob(std::size_t rings, std::size_t sectors, bo
   return m;
 }
 
+// A closed surface turned k times onto itself about the z axis (k-fold rotational symmetry;
+// k = 0: a surface of revolution), with no other rotational symmetry: `k` lobes around the axis,
+// a top unlike the bottom, and a twist so that no plane through the axis mirrors it (for k >= 1).
+// Latitude-longitude connectivity of `rings` rings (>= 3) of `sectors` vertices (>= 3); choose
+// `sectors` not a multiple of k for a tessellation that is not itself symmetric.
+inline Procedural_mesh rotational_blob(std::size_t k, std::size_t rings, std::size_t sectors)
+{
+  const double pi = 3.14159265358979323846;
+  const auto position = [&](double theta, double phi) {
+    const double s = std::sin(theta), c = std::cos(theta);
+    double r = 1 + 0.25 * c + 0.15 * std::cos(2 * theta);
+    if(k > 0) // lobes, twisted with the height, with a second harmonic to break their mirror planes
+      r += s * s * (0.3 * std::cos(double(k) * (phi + 0.6 * c)) + 0.1 * std::sin(2.0 * double(k) * phi));
+    return std::array<double, 3>{{r * s * std::cos(phi), r * s * std::sin(phi), 1.3 * r * c}};
+  };
+  Procedural_mesh m;
+  m.points.push_back(position(0, 0));
+  m.points.push_back(position(pi, 0));
+  for(std::size_t i = 1; i < rings; ++i)
+    for(std::size_t j = 0; j < sectors; ++j)
+      m.points.push_back(position(pi * double(i) / double(rings), 2 * pi * double(j) / double(sectors)));
+  const auto id = [&](std::size_t i, std::size_t j) { return 2 + (i - 1) * sectors + (j % sectors); };
+  for(std::size_t j = 0; j < sectors; ++j)
+    m.triangles.push_back({{0, id(1, j), id(1, j + 1)}});
+  for(std::size_t i = 1; i + 1 < rings; ++i)
+    for(std::size_t j = 0; j < sectors; ++j) {
+      m.triangles.push_back({{id(i, j), id(i + 1, j), id(i + 1, j + 1)}});
+      m.triangles.push_back({{id(i, j), id(i + 1, j + 1), id(i, j + 1)}});
+    }
+  for(std::size_t j = 0; j < sectors; ++j)
+    m.triangles.push_back({{1, id(rings - 1, j + 1), id(rings - 1, j)}});
+  return m;
+}
+
 // A smooth asymmetric warp of amplitude `a` (a displacement of at most about 1.5 a): a sideways
 // bend, a shear and a twist, none of them symmetric under y -> -y.
 inline std::array<double, 3> asymmetric_warp(const std::array<double, 3>& p, double a)
