@@ -216,8 +216,7 @@ int run_symmetrize(const Symmetrize_command_options& o)
   Progress progress("symmetry symmetrize", o.quiet, o.verbose);
   Output_files outputs;
   outputs.add_input(o.input);
-  if(!o.plane.empty())
-    parse_plane(o.plane); // a bad plane costs nothing
+  check_symmetry_options(o); // a bad plane or turn costs nothing
   if(!o.output_off.empty()) {
     outputs.add_output(o.output_off, "symmetrized mesh", {".off"});
   }
@@ -261,12 +260,11 @@ int run_enhance(const Enhance_options& o)
   outputs.add_input(o.input);
   if(!std::isfinite(o.amount))
     throw Usage_error("--amount must be a finite number");
-  if(!o.plane.empty())
-    parse_plane(o.plane);
+  check_symmetry_options(o);
   if(!o.symmetric.empty()) {
     outputs.add_input(o.symmetric);
-    if(!o.plane.empty())
-      throw Usage_error("give either --symmetric or --plane, not both");
+    if(!o.plane.empty() || o.rotation_requested)
+      throw Usage_error("give either --symmetric or --plane / --rotation, not both");
   }
   outputs.add_output(o.output_off, "enhanced mesh", {".off"});
   outputs.add_optional_output(o.report, "report", {".json"});
@@ -467,7 +465,8 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run)
 
   auto s = std::make_shared<Symmetrize_command_options>();
   CLI::App* sym = symmetry->add_subcommand(
-    "symmetrize", "Warp the mesh (same vertices and faces) to be symmetric about a plane, "
+    "symmetrize", "Warp the mesh (same vertices and faces) to be symmetric about a plane (or under a turn, "
+                  "--rotation), "
                   "changing its shape as little as possible.");
   add_common_options(sym, *s, true);
   sym->add_option("-o,--output", s->output_off, "The symmetrized mesh (.off; the input's vertices and faces, in order)");
@@ -487,7 +486,11 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run)
                   "RMS symmetry error (fraction of the diagonal) at which the isometric refinement stops "
                   "(0: no refinement); smaller, more symmetric and more distorted")
     ->capture_default_str();
-  sym->callback([s, &run]() { run = [s]() { return run_symmetrize(*s); }; });
+  add_rotation_option(sym, *s);
+  sym->callback([s, sym, &run]() {
+    note_rotation_option(sym, *s);
+    run = [s]() { return run_symmetrize(*s); };
+  });
 
   auto e = std::make_shared<Enhance_options>();
   CLI::App* enhance = symmetry->add_subcommand(
@@ -504,7 +507,11 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run)
   enhance->add_option("--levels", es.number_of_levels, "As for symmetrize")->capture_default_str();
   enhance->add_option("--final-weight", es.final_symmetry_weight, "As for symmetrize")->capture_default_str();
   enhance->add_option("--target-error", es.target_symmetry_error, "As for symmetrize")->capture_default_str();
-  enhance->callback([e, &run]() { run = [e]() { return run_enhance(*e); }; });
+  add_rotation_option(enhance, *e);
+  enhance->callback([e, enhance, &run]() {
+    note_rotation_option(enhance, *e);
+    run = [e]() { return run_enhance(*e); };
+  });
 
   auto t = std::make_shared<Transfer_options>();
   CLI::App* transfer = symmetry->add_subcommand(

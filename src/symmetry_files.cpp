@@ -5,6 +5,8 @@
 
 #include <CGAL/IO/PLY.h>
 
+#include <Eigen/Dense>
+
 #include <cmath>
 #include <cstdint>
 #include <iomanip>
@@ -29,7 +31,18 @@ void add_common_options(CLI::App* cmd, Common_options& o, bool with_plane)
 }
 
 // "a,b,c,d" as a plane; Usage_error when it is not four numbers.
+std::vector<double> parse_numbers(const std::string& text, const std::string& option, const std::string& expected);
+
 Kernel::Plane_3 parse_plane(const std::string& text)
+{
+  const std::vector<double> v = parse_numbers(text, "--plane", "four numbers a,b,c,d");
+  if(v.size() != 4)
+    throw Usage_error("--plane needs four numbers a,b,c,d (got '" + text + "')");
+  return Kernel::Plane_3(v[0], v[1], v[2], v[3]);
+}
+
+// Numbers separated by commas; Usage_error naming `option` and `expected` when one is not a number.
+std::vector<double> parse_numbers(const std::string& text, const std::string& option, const std::string& expected)
 {
   std::vector<double> v;
   std::stringstream ss(text);
@@ -45,12 +58,89 @@ Kernel::Plane_3 parse_plane(const std::string& text)
     while(used < item.size() && std::isspace(static_cast<unsigned char>(item[used])))
       ++used;
     if(item.empty() || used != item.size())
-      throw Usage_error("--plane needs four numbers a,b,c,d (got '" + text + "')");
+      throw Usage_error(option + " needs " + expected + " (got '" + text + "')");
     v.push_back(x);
   }
-  if(v.size() != 4)
-    throw Usage_error("--plane needs four numbers a,b,c,d (got '" + text + "')");
-  return Kernel::Plane_3(v[0], v[1], v[2], v[3]);
+  return v;
+}
+
+void add_rotation_option(CLI::App* cmd, Symmetrize_command_options& o)
+{
+  cmd->add_option("--rotation", o.rotation,
+                  "Symmetrize about a turn instead of a plane: ax,ay,az,px,py,pz,k (k-fold about the axis "
+                  "through p along a; k = 0: a surface of revolution), or the best detected one when no "
+                  "value is given")
+    ->expected(0, 1);
+}
+
+void note_rotation_option(const CLI::App* cmd, Symmetrize_command_options& o)
+{
+  o.rotation_requested = cmd->count("--rotation") > 0;
+}
+
+Symmetry parse_rotation(const std::string& text)
+{
+  const std::string expected = "seven numbers ax,ay,az,px,py,pz,k (k = 0 or an integer from 2 to 360)";
+  const std::vector<double> v = parse_numbers(text, "--rotation", expected);
+  bool finite = true;
+  for(double x : v)
+    finite = finite && std::isfinite(x);
+  if(v.size() != 7 || !finite || !(v[6] == std::floor(v[6])) || v[6] == 1 || v[6] < 0 || v[6] > 360)
+    throw Usage_error("--rotation needs " + expected + " (got '" + text + "')");
+  SMS::Rotational_symmetry<Kernel> r;
+  r.axis = Kernel::Vector_3(v[0], v[1], v[2]);
+  r.point = Kernel::Point_3(v[3], v[4], v[5]);
+  r.order = std::size_t(v[6]);
+  try {
+    return SMS::rotational_symmetry<Kernel>(r.point, r.axis, r.angle());
+  } catch(const CGAL::Shape_analysis::Bad_input&) {
+    throw Usage_error("--rotation: the axis (ax,ay,az) is the zero vector (got '" + text + "')");
+  }
+}
+
+void check_symmetry_options(const Symmetrize_command_options& o)
+{
+  if(o.rotation_requested && !o.plane.empty())
+    throw Usage_error("give either --plane or --rotation, not both");
+  if(!o.plane.empty())
+    parse_plane(o.plane);
+  if(o.rotation_requested && !o.rotation.empty())
+    parse_rotation(o.rotation);
+}
+
+Json rotation_json(const Symmetry& s)
+{
+  Eigen::Matrix3d m;
+  Eigen::Vector3d t;
+  for(int i = 0; i < 3; ++i) {
+    for(int j = 0; j < 3; ++j)
+      m(i, j) = CGAL::to_double(s.transformation.m(i, j));
+    t(i) = CGAL::to_double(s.transformation.m(i, 3));
+  }
+  // The axis from the skew part (sin of the angle times the axis), the angle from the trace.
+  Eigen::Vector3d axis(m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1));
+  const double sine = 0.5 * axis.norm(), cosine = 0.5 * (m.trace() - 1);
+  if(axis.norm() > 0)
+    axis.normalize();
+  else { // a half turn: the axis is the column of R + I of largest norm
+    const Eigen::Matrix3d p = m + Eigen::Matrix3d::Identity();
+    int k = 0;
+    for(int j = 1; j < 3; ++j)
+      if(p.col(j).norm() > p.col(k).norm())
+        k = j;
+    axis = p.col(k).normalized();
+  }
+  const double angle = std::atan2(sine, cosine);
+  // The point of the axis nearest the origin: the least-norm solution of (I - R) p = t.
+  const Eigen::Vector3d point =
+    (Eigen::Matrix3d::Identity() - m).jacobiSvd(Eigen::ComputeFullU | Eigen::ComputeFullV).solve(t);
+  Json j = Json::object();
+  j["axis"] = Json(std::vector<double>{axis(0), axis(1), axis(2)});
+  j["point"] = Json(std::vector<double>{point(0), point(1), point(2)});
+  j["angle_degrees"] = angle * 180 / 3.14159265358979323846;
+  const double k = angle > 0 ? 2 * 3.14159265358979323846 / angle : 0;
+  j["order"] = k >= 2 && std::abs(k - std::round(k)) < 1e-6 * k ? Json(std::size_t(std::round(k))) : Json();
+  return j;
 }
 
 // The reflective symmetry to use: the given plane, or the best detected one.
@@ -111,9 +201,29 @@ SMS::Symmetrization_result<Kernel> symmetrize_input(const Symmetrize_command_opt
                                                     Progress& progress, Symmetry& symmetry,
                                                     double& detect_seconds, bool& detected)
 {
-  symmetry = symmetry_of(o, input.mesh, progress, detect_seconds, detected);
-  progress.stage("symmetrizing " + std::to_string(num_vertices(input.mesh)) + " vertices about the plane " +
-                 plane_text(symmetry));
+  if(o.rotation_requested) {
+    Stopwatch watch;
+    detected = o.rotation.empty();
+    if(detected) {
+      progress.stage("detecting the rotational symmetry");
+      std::vector<SMS::Rotational_symmetry<Kernel>> found;
+      const SMS::Detect_reflective_symmetries_options& d = o.detection;
+      SMS::detect_rotational_symmetries(input.mesh, std::back_inserter(found),
+                                        SMS::parameters::number_of_samples(d.number_of_samples)
+                                          .random_seed(d.random_seed)
+                                          .number_of_threads(d.number_of_threads)
+                                          .maximum_number_of_symmetries(1));
+      if(found.empty())
+        throw Cli_error("no rotational symmetry found (give one with --rotation ax,ay,az,px,py,pz,k)");
+      symmetry = found.front().symmetry();
+    } else
+      symmetry = parse_rotation(o.rotation);
+    detect_seconds = watch.seconds();
+  } else
+    symmetry = symmetry_of(o, input.mesh, progress, detect_seconds, detected);
+  progress.stage("symmetrizing " + std::to_string(num_vertices(input.mesh)) + " vertices " +
+                 (symmetry.is_reflection ? "about the plane " + plane_text(symmetry)
+                                         : std::string("under the turn ") + rotation_json(symmetry).dump()));
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
   const SMS::Symmetrize_options& so = o.symmetrization;
   auto result = SMS::symmetrize(input.mesh, std::vector<Symmetry>{symmetry},
@@ -154,8 +264,13 @@ Json symmetrization_parameters(const Symmetrize_command_options& o)
 void add_symmetrization_report(Json& report, const SMS::Symmetrization_result<Kernel>& r,
                                const Symmetry& s, bool detected, double detect_seconds)
 {
-  report["plane"] = plane_json(s);
-  report["plane_detected"] = detected;
+  if(s.is_reflection) {
+    report["plane"] = plane_json(s);
+    report["plane_detected"] = detected;
+  } else {
+    report["rotation"] = rotation_json(s);
+    report["rotation_detected"] = detected;
+  }
   report["seconds_detection"] = detect_seconds;
   report["symmetry_error_before"] = r.symmetry_error_before;
   report["symmetry_error_after"] = r.symmetry_error_after;

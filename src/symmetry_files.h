@@ -14,6 +14,7 @@
 #include <CGAL/IO/Color.h>
 #include <CGAL/Surface_mesh_symmetrization/compute_symmetric_map.h>
 #include <CGAL/Surface_mesh_symmetrization/detect_reflective_symmetries.h>
+#include <CGAL/Surface_mesh_symmetrization/detect_rotational_symmetries.h>
 #include <CGAL/Surface_mesh_symmetrization/symmetrize.h>
 
 #include <CLI/CLI.hpp>
@@ -44,7 +45,28 @@ struct Symmetrize_command_options : Common_options
 {
   std::string output_off, map;
   SMS::Symmetrize_options symmetrization;
+  // --rotation [ax,ay,az,px,py,pz,k]: a turn about an axis instead of a plane, detected when no
+  // value is given.
+  std::string rotation;
+  bool rotation_requested = false;
 };
+
+// Adds --rotation to `cmd` (symmetrize, enhance); `o.rotation_requested` is set by
+// note_rotation_option() from the command's callback.
+void add_rotation_option(CLI::App* cmd, Symmetrize_command_options& o);
+void note_rotation_option(const CLI::App* cmd, Symmetrize_command_options& o);
+
+// The turn of --rotation ax,ay,az,px,py,pz,k: by 2 pi / k about the axis through (px,py,pz) along
+// (ax,ay,az), k >= 2, or for k = 0 by Rotational_symmetry::angle() of a surface of revolution;
+// Usage_error otherwise.
+Symmetry parse_rotation(const std::string& text);
+
+// Usage_error for a bad --plane or --rotation, or both given (before any file is read).
+void check_symmetry_options(const Symmetrize_command_options& o);
+
+// The rotation's axis (unit), the point of the axis nearest the origin, its angle in degrees, and
+// its order k when the angle is 2 pi / k (null otherwise), read off the transformation.
+Json rotation_json(const Symmetry& s);
 
 // The input, --plane, --samples, --seed, --threads, -q and -v.
 void add_common_options(CLI::App* cmd, Common_options& o, bool with_plane);
@@ -61,8 +83,8 @@ Symmetry symmetry_of(const Common_options& o, const Mesh& mesh, Progress& progre
 Json plane_json(const Symmetry& s);
 std::string plane_text(const Symmetry& s);
 
-// Symmetrizes `input.mesh` in place (the plane given or detected); returns the result and the
-// symmetry used.
+// Symmetrizes `input.mesh` in place (the plane or, with --rotation, the turn given or detected);
+// returns the result and the symmetry used.
 SMS::Symmetrization_result<Kernel> symmetrize_input(const Symmetrize_command_options& o, Input_mesh& input,
                                                     Progress& progress, Symmetry& symmetry,
                                                     double& detect_seconds, bool& detected);

@@ -1,7 +1,8 @@
 cmake_minimum_required(VERSION 3.19)
 # `shape_analysis symmetry detect --rotational` end to end on CGAL's turbine (a disk of revolution
 # about x with ten bolt holes): the report's best rotation is 10-fold about x, with its support
-# mesh written; the cow has none (an empty list, status 0).
+# mesh written; the cow has none (an empty list, status 0); `symmetry symmetrize --rotation`
+# (detected, then given as 1,0,0,0,0,0,10) reports the 10-fold turn about x.
 #   cmake -DEXE=<tool> -DMESH=<turbine.off> -DCOW=<cow.off> -DWORK=<dir> -P check_symmetry_rotational.cmake
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
@@ -33,4 +34,27 @@ file(READ "${WORK}/cow.json" report)
 string(JSON n LENGTH "${report}" rotations)
 if(NOT n EQUAL 0)
   message(FATAL_ERROR "the cow has ${n} rotations, expected none")
+endif()
+
+# symmetrize under the detected turn, and under the same turn given by hand: 10-fold about x.
+run_tool(symmetry symmetrize "${MESH}" -q --rotation --output "${WORK}/sym.off" --report "${WORK}/sym.json")
+file(READ "${WORK}/sym.json" report)
+string(JSON order GET "${report}" rotation order)
+string(JSON ax GET "${report}" rotation axis 0)
+string(JSON detected GET "${report}" rotation_detected)
+string(JSON before GET "${report}" symmetry_error_before)
+string(JSON after GET "${report}" symmetry_error_after)
+if(NOT order EQUAL 10 OR NOT ax GREATER 0.9999 OR NOT detected)
+  message(FATAL_ERROR "symmetrized under a turn of order ${order}, axis x ${ax}, detected ${detected}")
+endif()
+if(after GREATER 1e-4) # (the turbine is 10-fold to 3.4e-5 of its diagonal already)
+  message(FATAL_ERROR "symmetry error ${before} -> ${after}")
+endif()
+run_tool(symmetry symmetrize "${MESH}" -q --rotation 1,0,0,0,0,0,10 --output "${WORK}/sym2.off" --report "${WORK}/sym2.json")
+file(READ "${WORK}/sym2.json" report)
+string(JSON order GET "${report}" rotation order)
+string(JSON detected GET "${report}" rotation_detected)
+string(JSON angle GET "${report}" rotation angle_degrees)
+if(NOT order EQUAL 10 OR detected OR angle LESS 35.999 OR angle GREATER 36.001)
+  message(FATAL_ERROR "given turn reported as order ${order}, ${angle} degrees, detected ${detected}")
 endif()
