@@ -5,10 +5,11 @@
 // side by side with CGAL's SDF segmentation (default parameters) run on the same meshes in the
 // same process.
 //
-//   bench_hierarchical_segmentation_psb [--no-sdf] [--classes Human,Cup,...] [--ids 1,2,21-28]
-//                                       [--psb DIR] [--output FILE]
+//   bench_hierarchical_segmentation_psb [--no-sdf] [--segments auto] [--classes Human,Cup,...]
+//                                       [--ids 1,2,21-28] [--psb DIR] [--output FILE]
 //
-// Per mesh: K = the most frequent segment count of its human segmentations; ours gets K segments,
+// Per mesh: K = the most frequent segment count of its human segmentations; ours gets K segments
+// (with --segments auto: number_of_segments 0, the count chosen by the function),
 // SDF its defaults (5 clusters, smoothing lambda 0.26). Times exclude file reading. Scores are
 // averaged as the benchmark does: over the human segmentations of a mesh, then over the meshes of
 // a class, then over classes. Runs sequentially so that timings are clean. JSON goes to stdout
@@ -116,7 +117,7 @@ struct Accumulator
 void usage(const char* name)
 {
   std::cerr << "usage: " << name
-            << " [--no-sdf] [--classes Human,Cup,...] [--ids 1,2,21-28] [--psb DIR]"
+            << " [--no-sdf] [--segments auto] [--classes Human,Cup,...] [--ids 1,2,21-28] [--psb DIR]"
                " [--output FILE]\n";
 }
 
@@ -124,7 +125,7 @@ void usage(const char* name)
 
 int main(int argc, char** argv)
 {
-  bool with_sdf = true;
+  bool with_sdf = true, automatic = false;
   std::set<std::string> classes; // lower case
   std::set<int> ids;
   std::string output;
@@ -140,6 +141,13 @@ int main(int argc, char** argv)
     };
     if(arg == "--no-sdf")
       with_sdf = false;
+    else if(arg == "--segments") {
+      if(value() != "auto") {
+        usage(argv[0]);
+        return EXIT_FAILURE;
+      }
+      automatic = true;
+    }
     else if(arg == "--classes")
       for(const std::string& c : split(value()))
         classes.insert(lower(c));
@@ -167,9 +175,10 @@ int main(int argc, char** argv)
   report["psb_dir"] = psb_dir.string();
   report["metric"] = "Rand Index error (1 - RI), mean over human segmentations, then meshes of a "
                      "class, then classes";
-  report["ours"] = "CGAL::Consistent_segmentation::hierarchical_segmentation, "
-                   "number_of_segments = most frequent human segment count, other parameters "
-                   "default";
+  report["ours"] = std::string("CGAL::Consistent_segmentation::hierarchical_segmentation, ") +
+                   (automatic ? "number_of_segments = 0 (chosen by the function)"
+                              : "number_of_segments = most frequent human segment count") +
+                   ", other parameters default";
   report["sdf"] = with_sdf ? Json("CGAL::sdf_values + CGAL::segmentation_from_sdf_values, "
                                   "default parameters (5 clusters, smoothing lambda 0.26)")
                            : Json("skipped (--no-sdf)");
@@ -301,7 +310,7 @@ int main(int argc, char** argv)
         try {
           const auto start = std::chrono::steady_clock::now();
           row.ours.segments =
-            CS::hierarchical_segmentation(mesh, segment, CS::parameters::number_of_segments(k));
+            CS::hierarchical_segmentation(mesh, segment, CS::parameters::number_of_segments(automatic ? 0 : k));
           row.ours.seconds = seconds_since(start);
           for(Face f : faces(mesh))
             labels[f.idx()] = segment[f];

@@ -351,6 +351,18 @@ const CLI::Validator positive_count(
   },
   "N > 0");
 
+const CLI::Validator positive_count_or_auto(
+  [](std::string& text) {
+    if(text == "auto") {
+      text = "0";
+      return std::string();
+    }
+    std::string copy = text;
+    const std::string error = positive_count(copy);
+    return error.empty() ? error : "must be a positive whole number or auto (got " + text + ")";
+  },
+  "N > 0 or auto");
+
 std::string lower_extension(const std::string& path)
 {
   std::string ext = fs::path(path).extension().string();

@@ -167,6 +167,8 @@ int run_command_line(int argc, char** argv, bool execute);
 // A count option's check: a whole number >= 1, else "must be a positive whole number (got x)"
 // (CLI11's PositiveNumber names the largest double in its message).
 extern const CLI::Validator positive_count;
+// The same, or the word "auto", which becomes 0 (the library's "choose it").
+extern const CLI::Validator positive_count_or_auto;
 
 // The extension of `path`, lower case (".ply").
 std::string lower_extension(const std::string& path);

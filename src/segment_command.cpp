@@ -59,7 +59,9 @@ int run_segment(const Segment_options& o)
   }
 
   progress.stage("segmenting " + std::to_string(num_faces(mesh)) + " faces into " +
-                 std::to_string(o.segmentation.number_of_segments) + " segments");
+                 (o.segmentation.number_of_segments == 0 ? std::string("an automatic number of")
+                                                         : std::to_string(o.segmentation.number_of_segments)) +
+                 " segments");
   auto segment_map = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:segment", 0).first;
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
   const CS::Hierarchical_segmentation_options& so = o.segmentation;
@@ -130,9 +132,11 @@ void add_segment_command(CLI::App& app, std::function<int()>& run,
   CLI::App* cmd = app.add_subcommand(
     "segment", "Segment a triangle mesh into parts (hierarchical area-normalized cut).");
   cmd->add_option("input", options->input, "Input triangle mesh (.off, .ply, .obj, .stl)")->required();
-  cmd->add_option("-k,--segments", so.number_of_segments, "Number of segments")
+  cmd->add_option("-k,--segments", so.number_of_segments,
+                  "Number of segments, or auto: chosen from 2 to 12 where the merges stop removing concave "
+                  "creases (the report's number_of_segments is then 0, its segments the number chosen)")
     ->capture_default_str()
-    ->check(positive_count);
+    ->transform(positive_count_or_auto);
   cmd->add_option("-o,--output", options->output_ply,
                   "Coloured mesh (.ply, one colour and an integer 'segment' per face)");
   cmd->add_option("--seg", options->output_seg,

@@ -231,6 +231,60 @@ void expect_parts_recovered(const SAS::Procedural_shape& shape, double cell, con
 }
 
 // ---------------------------------------------------------------------------------------------
+// The automatic number of segments (number_of_segments 0)
+
+TEST(AutomaticCount, NeverMergesPartsBoundedByCreasesAndSegmentsAsIfGiven)
+{
+  // Parts joined along concave creases stay apart: the count chosen is at least the number of
+  // parts (every later merge removes creases only), within [2, 12]; the segmentation is the one
+  // given that count.
+  const std::pair<SAS::Procedural_shape, double> shapes[] = {{SAS::three_sphere_chain(), 0.2},
+                                                             {SAS::three_sphere_chain(2), 0.18},
+                                                             {SAS::body_with_limbs(), 0.14},
+                                                             {SAS::body_with_limbs(4, true), 0.14},
+                                                             {SAS::star(6), 0.16}};
+  for(const auto& s : shapes) {
+    const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(s.first, s.second);
+    const Mesh m = to_surface_mesh(lm);
+    std::size_t automatic = 0, given = 0;
+    const std::vector<std::size_t> labels = segment_k(m, 0, &automatic);
+    EXPECT_GE(automatic, lm.number_of_labels);
+    EXPECT_GE(automatic, 2u);
+    EXPECT_LE(automatic, 12u);
+    EXPECT_EQ(segment_k(m, automatic, &given), labels);
+    EXPECT_EQ(given, automatic);
+  }
+  // The chain of three spheres with even creases: exactly its three parts.
+  const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(SAS::three_sphere_chain(2), 0.18);
+  std::size_t automatic = 0;
+  segment_k(to_surface_mesh(lm), 0, &automatic);
+  EXPECT_EQ(automatic, 3u);
+}
+
+TEST(AutomaticCount, TinyMeshes)
+{
+  // A tetrahedron: at most its four faces; two triangles: two.
+  Mesh t;
+  const auto a = t.add_vertex(Point(0, 0, 0)), b = t.add_vertex(Point(1, 0, 0)), c = t.add_vertex(Point(0, 1, 0)),
+             d = t.add_vertex(Point(0, 0, 1));
+  t.add_face(a, c, b);
+  t.add_face(a, b, d);
+  t.add_face(a, d, c);
+  t.add_face(b, c, d);
+  std::size_t count = 0;
+  segment_k(t, 0, &count);
+  EXPECT_GE(count, 2u);
+  EXPECT_LE(count, 4u);
+  Mesh two;
+  const auto p = two.add_vertex(Point(0, 0, 0)), q = two.add_vertex(Point(1, 0, 0)), r = two.add_vertex(Point(0, 1, 0)),
+             u = two.add_vertex(Point(1, 1, 0.2));
+  two.add_face(p, q, r);
+  two.add_face(q, u, r);
+  segment_k(two, 0, &count);
+  EXPECT_EQ(count, 2u);
+}
+
+// ---------------------------------------------------------------------------------------------
 // Procedural shapes: the known parts are recovered
 
 TEST(ProceduralParts, ThreeSphereChain)
@@ -723,7 +777,6 @@ TEST(BadInput, ParametersOutOfRange)
   const std::size_t n = num_faces(m);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   namespace P = CS::parameters;
-  expect_bad_input(m, P::number_of_segments(0), "number_of_segments");
   expect_bad_input(m, P::number_of_segments(n + 1), "number_of_segments");
   expect_bad_input(m, P::number_of_segments(-1), "number_of_segments"); // converts to a huge count
   expect_bad_input(m, P::number_of_segments(2).concavity_exponent(-1.0), "concavity_exponent");

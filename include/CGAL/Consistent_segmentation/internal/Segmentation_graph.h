@@ -32,11 +32,12 @@ typedef Hierarchical_segmentation_options Segmentation_options;
 // like deep creases) are merged into their neighbours before any two larger segments are.
 constexpr double small_segment_fraction = 1e-4;
 
+// `automatic`: whether number_of_segments 0 (chosen automatically) is allowed.
 inline void check_options(const Segmentation_options& o, std::size_t number_of_faces,
-                          const std::string& who)
+                          const std::string& who, bool automatic = false)
 {
   using CGAL::Shape_analysis::Bad_input;
-  if(o.number_of_segments == 0)
+  if(o.number_of_segments == 0 && !automatic)
     throw Bad_input(who + ": number_of_segments must be at least 1");
   if(o.number_of_segments > number_of_faces)
     throw Bad_input(who + ": number_of_segments (" + std::to_string(o.number_of_segments) +
@@ -71,14 +72,80 @@ inline void add_links_and_prior(CGAL::Shape_analysis::internal::Dual_graph& g, c
         g.cut_cost[e] /= o.prior_boundary_factor;
 }
 
-// Segments the dual graph `g` (modified: prior boundaries and links are applied to it).
-inline std::vector<std::size_t> segment_dual_graph(CGAL::Shape_analysis::internal::Dual_graph& g,
-                                                   const Segmentation_options& o,
-                                                   const std::vector<long long>* prior_labels)
+// The automatic number of segments (number_of_segments 0): the graph is merged down to one segment
+// (or as few as its links allow) and the last `automatic_maximum_segments` merges are replayed with
+// the boundary each removes: its cut cost over its length is its mean concavity weight, 1 where it
+// crosses flat or convex surface, small along a concave crease. The number is that of the segments
+// right after the last merge that removed a boundary of mean weight at least
+// `automatic_crease_weight` (no later merge removes anything but creases), between 2 and the
+// maximum; the maximum when no such merge is among the last ones. Boundaries made of component
+// links only (no length) count as creases. Measured on the 152 meshes of the Princeton
+// Segmentation Benchmark's development subset (19 classes), Rand Index error averaged per class:
+// 0.152 (0.153 choosing the two figures on 18 classes and scoring the 19th, for each class), against
+// 0.224 with the fixed 8 segments and 0.122 with each mesh's human count; a weight of 0.8, 0.85 or
+// 0.95: 0.162, 0.156, 0.185; a maximum of 15, 20 or 30: 0.153, 0.154, 0.158.
+constexpr double automatic_crease_weight = 0.9;
+constexpr std::size_t automatic_maximum_segments = 12;
+
+inline std::size_t automatic_number_of_segments(const CGAL::Shape_analysis::internal::Dual_graph& g)
 {
   namespace SAI = CGAL::Shape_analysis::internal;
-  add_links_and_prior(g, o, prior_labels);
+  typedef SAI::Normalized_cut_clustering::Id Id;
+  const std::size_t n = g.number_of_nodes();
+  if(n <= 2)
+    return n;
+  SAI::Normalized_cut_clustering clustering(g.node_size, g.edge_source, g.edge_target, g.cut_cost);
+  const double small_size =
+    (std::min)(small_segment_fraction, 0.1 / double(automatic_maximum_segments)) * g.total_size();
+  clustering.run(1, {}, {}, 0.0, 0, small_size);
+  const auto& merges = clustering.merges();
+  const std::size_t end_count = n - merges.size(); // (1 unless links leave pieces apart)
+  const std::size_t last = (std::min)(merges.size(), automatic_maximum_segments);
+  // The clusters before the last `last` merges, densely numbered; the boundaries between them.
+  std::vector<Id> root(n);
+  std::iota(root.begin(), root.end(), Id(0));
+  const std::function<Id(Id)> find = [&](Id x) {
+    while(root[x] != x)
+      x = root[x] = root[root[x]];
+    return x;
+  };
+  for(std::size_t i = 0; i + last < merges.size(); ++i)
+    root[find(merges[i].absorbed)] = find(merges[i].survivor);
+  std::vector<std::size_t> dense(n, 0);
+  std::size_t m = 0;
+  for(Id x = 0; x < n; ++x)
+    if(find(x) == x)
+      dense[x] = m++;
+  std::vector<double> cost(m * m, 0.0), length(m * m, 0.0);
+  for(std::size_t e = 0; e < g.number_of_edges(); ++e) {
+    const std::size_t a = dense[find(g.edge_source[e])], b = dense[find(g.edge_target[e])];
+    if(a == b)
+      continue;
+    cost[a * m + b] += g.cut_cost[e], cost[b * m + a] += g.cut_cost[e];
+    length[a * m + b] += g.edge_length[e], length[b * m + a] += g.edge_length[e];
+  }
+  std::size_t count = (std::min)(automatic_maximum_segments, n);
+  for(std::size_t i = merges.size() - last; i < merges.size(); ++i) {
+    const Id s = find(merges[i].survivor), t = find(merges[i].absorbed);
+    const std::size_t a = dense[s], b = dense[t];
+    const double l = length[a * m + b];
+    if(l > 0 && cost[a * m + b] >= automatic_crease_weight * l) // the segments left after it
+      count = (std::min)(count, end_count + (merges.size() - 1 - i));
+    for(std::size_t c = 0; c < m; ++c) // b's boundaries become a's
+      if(c != a && c != b) {
+        cost[a * m + c] += cost[b * m + c], cost[c * m + a] = cost[a * m + c];
+        length[a * m + c] += length[b * m + c], length[c * m + a] = length[a * m + c];
+      }
+    root[t] = s;
+  }
+  return (std::max)(count, (std::max)(std::size_t(2), end_count));
+}
 
+// segment_dual_graph() once the links and prior boundaries are in `g`.
+inline std::vector<std::size_t> segment_prepared_graph(CGAL::Shape_analysis::internal::Dual_graph& g,
+                                                       const Segmentation_options& o)
+{
+  namespace SAI = CGAL::Shape_analysis::internal;
   SAI::Normalized_cut_clustering clustering(g.node_size, g.edge_source, g.edge_target, g.cut_cost);
   const std::size_t n = g.number_of_nodes();
   const std::size_t to_merge = n > o.number_of_segments ? n - o.number_of_segments : 0;
@@ -99,6 +166,20 @@ inline std::vector<std::size_t> segment_dual_graph(CGAL::Shape_analysis::interna
   if(o.progress_callback)
     o.progress_callback(1.0);
   return number_by_size(labels, g.node_size);
+}
+
+// Segments the dual graph `g` (modified: prior boundaries and links are applied to it).
+inline std::vector<std::size_t> segment_dual_graph(CGAL::Shape_analysis::internal::Dual_graph& g,
+                                                   const Segmentation_options& o,
+                                                   const std::vector<long long>* prior_labels)
+{
+  add_links_and_prior(g, o, prior_labels);
+  if(o.number_of_segments == 0) { // chosen here, then segmented as if given
+    Segmentation_options given = o;
+    given.number_of_segments = automatic_number_of_segments(g);
+    return segment_prepared_graph(g, given);
+  }
+  return segment_prepared_graph(g, o);
 }
 
 } // namespace internal
