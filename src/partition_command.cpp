@@ -3,6 +3,7 @@
 
 // shape_analysis partition IN --method mincut|kmeans|hierarchical --samples N --seed S
 //     --part-size s --output OUT.ply --edge-values OUT.txt --report R.json
+//     [--cuts CUTS.json [--max-cuts N]]
 // shape_analysis partition-segment IN --segments K --seg OUT.seg --output OUT.ply --report R.json
 // Every default is the library's (its options structs); the reports echo the options under the
 // named parameters' names.
@@ -11,6 +12,7 @@
 
 #include <CGAL/Randomized_cuts/Partition_function_options.h>
 #include <CGAL/Randomized_cuts/Segment_with_partition_function_options.h>
+#include <CGAL/Randomized_cuts/most_consistent_cuts.h>
 #include <CGAL/Randomized_cuts/partition_function.h>
 #include <CGAL/Randomized_cuts/segment_with_partition_function.h>
 
@@ -37,8 +39,9 @@ struct Command_options
 
 struct Partition_options : Command_options
 {
-  std::string input, output_ply, edge_values, report;
+  std::string input, output_ply, edge_values, report, cuts;
   RC::Partition_function_options sampling;
+  std::size_t maximum_cuts = 20;
 };
 
 struct Partition_segment_options : Command_options
@@ -192,6 +195,47 @@ void write_partition_ply(std::ostream& out, const Input_mesh& input,
   }
 }
 
+// The cuts as JSON, by decreasing consistency: per cut its rank, consistency, normalized cut,
+// length, samples, sample index, the edges it crosses (pairs i < j of the file's vertex indices,
+// sorted) and, for min-cut samples, the faces of its smaller side (the file's face indices, sorted).
+Json cuts_json(const Input_mesh& input, const std::vector<RC::Cut<Mesh>>& cuts)
+{
+  const Mesh& mesh = input.mesh;
+  std::vector<std::size_t> input_face(num_faces(mesh), 0);
+  for(std::size_t i = input.triangles.size(); i-- > 0;) // (the first input face of a mesh face)
+    if(input.mesh_face[i] != Input_mesh::left_out)
+      input_face[input.mesh_face[i]] = i;
+  Json list = Json::array();
+  for(std::size_t k = 0; k < cuts.size(); ++k) {
+    const RC::Cut<Mesh>& c = cuts[k];
+    std::vector<std::array<std::size_t, 2>> edges;
+    for(Mesh::Edge_index e : c.edges) {
+      const Mesh::Halfedge_index h = halfedge(e, mesh);
+      std::size_t i = input.input_index[input.vertex_point[source(h, mesh)]];
+      std::size_t j = input.input_index[input.vertex_point[target(h, mesh)]];
+      edges.push_back({{(std::min)(i, j), (std::max)(i, j)}});
+    }
+    std::sort(edges.begin(), edges.end());
+    std::vector<std::size_t> side;
+    for(Mesh::Face_index f : c.smaller_side)
+      side.push_back(input_face[f]);
+    std::sort(side.begin(), side.end());
+    Json j = Json::object();
+    j["rank"] = k;
+    j["consistency"] = c.consistency;
+    j["normalized_cut"] = c.normalized_cut;
+    j["length"] = c.length;
+    j["samples"] = c.number_of_samples;
+    j["sample_index"] = c.sample_index;
+    j["edges"] = Json(edges);
+    j["smaller_side_faces"] = Json(side);
+    list.push_back(j);
+  }
+  Json root = Json::object();
+  root["cuts"] = list;
+  return root;
+}
+
 int run_partition(const Partition_options& o)
 {
   Stopwatch total;
@@ -200,6 +244,7 @@ int run_partition(const Partition_options& o)
   outputs.add_input(o.input);
   outputs.add_optional_output(o.output_ply, "coloured mesh", {".ply"});
   outputs.add_optional_output(o.edge_values, "edge values");
+  outputs.add_optional_output(o.cuts, "cuts", {".json"});
   outputs.add_optional_output(o.report, "report", {".json"});
 
   double read_seconds = 0;
@@ -213,19 +258,28 @@ int run_partition(const Partition_options& o)
   std::vector<double> values(num_edges(mesh), 0.0);
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
   Stopwatch sampling;
-  const RC::Partition_function_result r = RC::partition_function(
-    mesh, CGAL::make_property_map(values),
-    RC::parameters::sampling_method(so.sampling_method)
-      .number_of_samples(so.number_of_samples)
-      .random_seed(so.random_seed)
-      .part_size(so.part_size)
-      .number_of_clusters(so.number_of_clusters)
-      .randomness(so.randomness)
-      .convergence_tolerance(so.convergence_tolerance)
-      .score_weighting(so.score_weighting)
-      .number_of_threads(so.number_of_threads)
-      .concavity_exponent(so.concavity_exponent)
-      .progress_callback(on_progress));
+  const auto np = RC::parameters::sampling_method(so.sampling_method)
+                    .number_of_samples(so.number_of_samples)
+                    .random_seed(so.random_seed)
+                    .part_size(so.part_size)
+                    .number_of_clusters(so.number_of_clusters)
+                    .randomness(so.randomness)
+                    .convergence_tolerance(so.convergence_tolerance)
+                    .score_weighting(so.score_weighting)
+                    .number_of_threads(so.number_of_threads)
+                    .concavity_exponent(so.concavity_exponent)
+                    .progress_callback(on_progress);
+  RC::Partition_function_result r;
+  std::vector<RC::Cut<Mesh>> cuts;
+  if(o.cuts.empty())
+    r = RC::partition_function(mesh, CGAL::make_property_map(values), np);
+  else { // the same samples, kept: their distinct cuts and the values they were ranked with
+    cuts = RC::most_consistent_cuts(mesh, np.edge_value_map(CGAL::make_property_map(values)));
+    for(const RC::Cut<Mesh>& c : cuts)
+      r.number_of_samples += c.number_of_samples;
+    if(cuts.size() > o.maximum_cuts)
+      cuts.resize(o.maximum_cuts);
+  }
   const double seconds = sampling.seconds();
   progress.done();
 
@@ -246,6 +300,10 @@ int run_partition(const Partition_options& o)
     progress.stage("writing " + o.output_ply);
     outputs.stage(o.output_ply, true,
                   [&](std::ostream& out) { write_partition_ply(out, input, edge_points, edge_value); });
+  }
+  if(!o.cuts.empty()) {
+    progress.stage("writing " + o.cuts);
+    outputs.stage(o.cuts, false, [&](std::ostream& out) { out << cuts_json(input, cuts).dump(1) << '\n'; });
   }
   if(!o.edge_values.empty()) {
     progress.stage("writing " + o.edge_values);
@@ -277,15 +335,23 @@ int run_partition(const Partition_options& o)
     report["edges"] = edge_points.size();
     report["parameters"] = sampling_json(o.sampling, true);
     report["samples_drawn"] = r.number_of_samples;
-    report["converged"] = r.converged;
-    report["largest_change"] = r.largest_change;
+    if(!o.cuts.empty()) {
+      report["cuts"] = cuts.size();
+      report["most_consistent_cut"] = cuts.empty() ? Json() : Json(cuts.front().consistency);
+    }
+    report["converged"] = o.cuts.empty() ? Json(r.converged) : Json(); // (not told with --cuts)
+    report["largest_change"] = o.cuts.empty() ? Json(r.largest_change) : Json();
     report["largest_value"] = largest;
     report["mean_value"] = edge_points.empty() ? 0.0 : sum / double(edge_points.size());
     report["seconds_per_sample"] = r.number_of_samples > 0 ? seconds / double(r.number_of_samples) : 0.0;
     stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(),
-                 {{"mesh", o.output_ply}, {"edge_values", o.edge_values}});
+                 {{"mesh", o.output_ply}, {"edge_values", o.edge_values}, {"cuts", o.cuts}});
   }
   outputs.commit();
+  if(!o.cuts.empty())
+    std::cout << o.input << ": " << cuts.size() << " most consistent cuts"
+              << (cuts.empty() ? std::string() : ", the first of consistency " + std::to_string(cuts.front().consistency))
+              << '\n';
   std::cout << o.input << ": " << num_faces(mesh) << " faces, " << r.number_of_samples
             << " samples in " << seconds << " s; largest edge value " << largest << "\n";
   return 0;
@@ -364,8 +430,19 @@ void add_partition_commands(CLI::App& app, std::function<int()>& run)
     cmd->add_option("--edge-values", o->edge_values,
                     "Text file, one line per edge: 'i j value', i < j the input's vertex indices");
     cmd->add_option("--report", o->report, "JSON report (inputs, parameters, seconds, figures)");
+    cmd->add_option("--cuts", o->cuts,
+                    "JSON file of the samples' distinct cuts, the most consistent first: consistency, "
+                    "normalized_cut, length, samples, the edges crossed (vertex index pairs) and the "
+                    "faces of the smaller side (mincut)");
+    cmd->add_option("--max-cuts", o->maximum_cuts, "With --cuts: the largest number of cuts written")
+      ->capture_default_str()
+      ->check(positive_count);
     add_sampling_options(cmd, o->sampling, *o, true);
-    cmd->callback([o, &run]() { run = [o]() { return run_partition(*o); }; });
+    cmd->callback([o, cmd, &run]() {
+      if(o->cuts.empty() && cmd->count("--max-cuts") > 0)
+        throw CLI::ValidationError("--max-cuts", "needs --cuts");
+      run = [o]() { return run_partition(*o); };
+    });
   }
   {
     auto o = std::make_shared<Partition_segment_options>();

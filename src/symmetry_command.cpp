@@ -48,7 +48,7 @@ struct Enhance_options : Symmetrize_command_options
 
 struct Transfer_options : Common_options
 {
-  std::string colors, output_ply;
+  std::string colors, output_ply, symmetric;
   SMS::Transfer_vertex_attribute_options transfer;
 };
 
@@ -345,6 +345,8 @@ int run_transfer(const Transfer_options& o)
   outputs.add_input(colour_file);
   if(!o.plane.empty())
     parse_plane(o.plane);
+  if(!o.symmetric.empty())
+    outputs.add_input(o.symmetric);
   outputs.add_output(o.output_ply, "coloured mesh", {".ply"});
   outputs.add_optional_output(o.report, "report", {".json"});
   double read_seconds = 0;
@@ -373,7 +375,21 @@ int run_transfer(const Transfer_options& o)
   Symmetry symmetry;
   double detect_seconds = 0;
   bool detected = false;
-  symmetry = symmetry_of(o, input.mesh, progress, detect_seconds, detected);
+  // With --symmetric: the symmetric map of the symmetrized mesh (the input's vertices and faces),
+  // whose plane is detected there when not given.
+  std::vector<SMS::Mirror_point> map;
+  if(!o.symmetric.empty()) {
+    double more = 0;
+    const Input_mesh sym = read_input_mesh(o.symmetric, progress, more);
+    read_seconds += more;
+    if(sym.points.size() != input.points.size() || sym.triangles != input.triangles)
+      throw Cli_error("'" + o.symmetric + "' does not have the vertices and faces of '" + o.input + "'");
+    symmetry = symmetry_of(o, sym.mesh, progress, detect_seconds, detected);
+    progress.stage("computing the symmetric map of " + o.symmetric);
+    map = SMS::compute_symmetric_map(sym.mesh, symmetry,
+                                     SMS::parameters::number_of_threads(o.detection.number_of_threads));
+  } else
+    symmetry = symmetry_of(o, input.mesh, progress, detect_seconds, detected);
   // Colours of the mesh's vertices, through the points.
   Mesh mesh = input.mesh;
   auto colour = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:transfer_colour").first;
@@ -384,10 +400,13 @@ int run_transfer(const Transfer_options& o)
   const std::string from = name_of(source_sides, to.source_side);
   progress.stage(std::string(copy ? "copying" : "blending") + " vertex colours across the plane " +
                  plane_text(symmetry));
-  SMS::transfer_vertex_attribute(mesh, symmetry, colour,
-                                 SMS::parameters::transfer_mode(to.transfer_mode)
-                                   .source_side(to.source_side)
-                                   .number_of_threads(o.detection.number_of_threads));
+  const auto np = SMS::parameters::transfer_mode(to.transfer_mode)
+                    .source_side(to.source_side)
+                    .number_of_threads(o.detection.number_of_threads);
+  if(map.empty())
+    SMS::transfer_vertex_attribute(mesh, symmetry, colour, np);
+  else
+    SMS::transfer_vertex_attribute(mesh, symmetry, colour, np.symmetric_map(map));
   std::vector<CGAL::IO::Color> colours(input.points.size());
   for(std::size_t p = 0; p < input.points.size(); ++p)
     colours[p] = file_colours[input.input_index[p]];
@@ -414,6 +433,7 @@ int run_transfer(const Transfer_options& o)
     report["parameters"] = parameters;
     report["plane"] = plane_json(symmetry);
     report["plane_detected"] = detected;
+    report["symmetric"] = o.symmetric.empty() ? Json() : Json(o.symmetric);
     report["seconds_detection"] = detect_seconds;
     report["vertices_changed"] = changed;
     stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(), {{"mesh", o.output_ply}});
@@ -533,6 +553,10 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run)
     ->transform(CLI::CheckedTransformer(source_sides).description("{positive,negative}"))
     ->default_str(name_of(source_sides, t->transfer.source_side));
   transfer->add_option("--report", t->report, "JSON report");
+  transfer->add_option("--symmetric", t->symmetric,
+                       "The symmetrized mesh written by 'symmetry symmetrize' (the input's vertices and faces): "
+                       "the colours go through its symmetric map, whose mirror points are those of a "
+                       "symmetric surface, instead of the input's (its plane detected there when not given)");
   transfer->callback([t, &run]() { run = [t]() { return run_transfer(*t); }; });
 
   add_symmetry_remesh_commands(symmetry, run);

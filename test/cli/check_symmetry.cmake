@@ -96,3 +96,33 @@ string(JSON changed GET "${transfer}" vertices_changed)
 if(NOT changed EQUAL 1)
   message(FATAL_ERROR "${changed} vertices recoloured, expected 1 (the blue one)")
 endif()
+
+# transfer --symmetric: the input's blue vertex is at x = -0.6 (asymmetric); through the symmetric
+# map of the symmetrized octahedron (x = -1) its mirror point is the red vertex itself, so it turns
+# exactly red; through the input's own map its mirror point (0.6, 0, 0) is off the surface and its
+# colour a blend of the red and green vertices.
+file(READ "${WORK}/octahedron.ply" octa)
+string(REPLACE "-1 0 0 0 0 255" "-0.6 0 0 0 0 255" warped "${octa}")
+file(WRITE "${WORK}/warped.ply" "${warped}")
+file(WRITE "${WORK}/symmetrized.off" "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
+  "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n")
+# The colour (hex rrggbb) of vertex `index` of a PLY written by the tool (binary, x y z doubles and
+# red green blue uchars per vertex).
+function(vertex_colour file index out)
+  file(READ "${file}" hex HEX)
+  string(FIND "${hex}" "656e645f6865616465720a" at) # "end_header\n"
+  math(EXPR at "${at} + 22 + 2 * (${index} * 27 + 24)")
+  string(SUBSTRING "${hex}" ${at} 6 colour)
+  set(${out} "${colour}" PARENT_SCOPE)
+endfunction()
+run_tool(symmetry transfer "${WORK}/warped.ply" -q --plane 1,0,0,0 --symmetric "${WORK}/symmetrized.off"
+         --output "${WORK}/through_symmetric.ply" --report "${WORK}/through_symmetric.json")
+vertex_colour("${WORK}/through_symmetric.ply" 1 through_symmetric)
+if(NOT through_symmetric STREQUAL "ff0000")
+  message(FATAL_ERROR "through the symmetrized mesh's map the vertex became ${through_symmetric}, expected ff0000")
+endif()
+run_tool(symmetry transfer "${WORK}/warped.ply" -q --plane 1,0,0,0 --output "${WORK}/own_map.ply")
+vertex_colour("${WORK}/own_map.ply" 1 own)
+if(own STREQUAL "ff0000")
+  message(FATAL_ERROR "through the input's own map the vertex is pure red too: the test shows nothing")
+endif()
