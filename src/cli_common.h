@@ -243,6 +243,7 @@ private:
 void add_segment_command(CLI::App& app, std::function<int()>& run,
                          const CGAL::Consistent_segmentation::Hierarchical_segmentation_options& defaults = {});
 void add_register_command(CLI::App& app, std::function<int()>& run);
+void add_deform_command(CLI::App& app, std::function<int()>& run); // (register_command.cpp)
 void add_partition_commands(CLI::App& app, std::function<int()>& run); // partition, partition-segment
 void add_coseg_command(CLI::App& app, std::function<int()>& run,
                        const CGAL::Consistent_segmentation::Consistent_segmentation_options& defaults = {});

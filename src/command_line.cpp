@@ -98,6 +98,7 @@ int run_command_line(int argc, char** argv, bool execute)
   std::function<int()> run;
   add_segment_command(app, run);
   add_register_command(app, run);
+  add_deform_command(app, run);
   add_partition_commands(app, run);
   add_coseg_command(app, run);
   add_symmetry_command(app, run);

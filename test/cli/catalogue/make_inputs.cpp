@@ -334,6 +334,14 @@ void side_files()
   text("short.seg", "0\n1\n");
   text("long.seg", "0\n0\n1\n1\n1\n");
   text("fraction.seg", "0\n1.5\n1\n1\n");
+  // deform's handles and fixed vertices (for the tetrahedron)
+  text("handles.txt", "0 0 0 2\n");
+  text("handles_three_numbers.txt", "0 0 2\n");
+  text("handles_far_vertex.txt", "9 0 0 2\n");
+  text("handles_nan.txt", "0 nan 0 2\n");
+  text("handles_twice.txt", "0 0 0 2\n0 1 0 2\n");
+  text("fixed_handle.txt", "0\n");
+  text("values_one_edge.txt", "0 1 0.5\n");
   text("negative.seg", "0\n-2\n1\n1\n");
   text("huge_label.seg", "0\n99999999999999999999999\n1\n1\n");
   text("words.seg", "zero\none\ntwo\nthree\n");
