@@ -3,7 +3,7 @@
 
 // shape_analysis partition IN --method mincut|kmeans|hierarchical --samples N --seed S
 //     --part-size s --output OUT.ply --edge-values OUT.txt --report R.json
-//     [--cuts CUTS.json [--max-cuts N]]
+//     [--cuts CUTS.json [--max-cuts N] | --scales s1,s2,...]
 // shape_analysis partition-segment IN --segments K --seg OUT.seg --output OUT.ply --report R.json
 // Every default is the library's (its options structs); the reports echo the options under the
 // named parameters' names.
@@ -42,6 +42,7 @@ struct Partition_options : Command_options
   std::string input, output_ply, edge_values, report, cuts;
   RC::Partition_function_options sampling;
   std::size_t maximum_cuts = 20;
+  std::vector<double> scales; // --scales: multiscale_partition_function()'s part_sizes
 };
 
 struct Partition_segment_options : Command_options
@@ -271,7 +272,14 @@ int run_partition(const Partition_options& o)
                     .progress_callback(on_progress);
   RC::Partition_function_result r;
   std::vector<RC::Cut<Mesh>> cuts;
-  if(o.cuts.empty())
+  std::vector<std::vector<double>> scale_values; // with --scales: per edge, one value per part size
+  if(!o.scales.empty()) { // the largest over the scales goes to `values`
+    scale_values.assign(num_edges(mesh), std::vector<double>());
+    r = RC::multiscale_partition_function(mesh, CGAL::make_property_map(scale_values), np.part_sizes(o.scales));
+    for(std::size_t e = 0; e < values.size(); ++e)
+      for(double v : scale_values[e])
+        values[e] = (std::max)(values[e], v);
+  } else if(o.cuts.empty())
     r = RC::partition_function(mesh, CGAL::make_property_map(values), np);
   else { // the same samples, kept: their distinct cuts and the values they were ranked with
     cuts = RC::most_consistent_cuts(mesh, np.edge_value_map(CGAL::make_property_map(values)));
@@ -308,14 +316,17 @@ int run_partition(const Partition_options& o)
   if(!o.edge_values.empty()) {
     progress.stage("writing " + o.edge_values);
     outputs.stage(o.edge_values, false, [&](std::ostream& out) {
-      // i j value, i < j the file's vertex indices, one line per edge of the surface, sorted.
-      std::vector<std::pair<std::array<std::size_t, 2>, double>> lines;
+      // i j value, i < j the file's vertex indices, one line per edge of the surface, sorted
+      // (with --scales: i j and one value per part size).
+      std::vector<std::pair<std::array<std::size_t, 2>, std::vector<double>>> lines;
       lines.reserve(edge_points.size());
-      for(std::size_t e = 0; e < edge_points.size(); ++e) {
+      std::size_t e = 0;
+      for(Mesh::Edge_index edge : edges(mesh)) {
         std::size_t i = input.input_index[edge_points[e][0]], j = input.input_index[edge_points[e][1]];
         if(i > j)
           std::swap(i, j);
-        lines.push_back({{i, j}, edge_value[e]});
+        lines.push_back({{i, j}, scale_values.empty() ? std::vector<double>{edge_value[e]} : scale_values[edge]});
+        ++e;
       }
       std::sort(lines.begin(), lines.end());
       std::ostringstream buffer;
@@ -325,7 +336,10 @@ int run_partition(const Partition_options& o)
         // with the largest of their values (the last after sorting).
         if(k + 1 < lines.size() && lines[k + 1].first == lines[k].first)
           continue;
-        buffer << lines[k].first[0] << ' ' << lines[k].first[1] << ' ' << lines[k].second << '\n';
+        buffer << lines[k].first[0] << ' ' << lines[k].first[1];
+        for(double v : lines[k].second)
+          buffer << ' ' << v;
+        buffer << '\n';
       }
       out << buffer.str();
     });
@@ -334,7 +348,25 @@ int run_partition(const Partition_options& o)
     Json report = input_report("partition", o.input, input);
     report["edges"] = edge_points.size();
     report["parameters"] = sampling_json(o.sampling, true);
+    if(!o.scales.empty()) { // multiscale_partition_function()'s part_sizes instead of part_size
+      report["parameters"]["part_sizes"] = Json(o.scales);
+      report["parameters"]["part_size"] = Json();
+    }
     report["samples_drawn"] = r.number_of_samples;
+    if(!o.scales.empty()) { // per part size: the largest and mean values
+      Json per_scale = Json::array();
+      for(std::size_t k = 0; k < o.scales.size(); ++k) {
+        double scale_largest = 0, scale_sum = 0;
+        for(const auto& v : scale_values)
+          scale_largest = (std::max)(scale_largest, v[k]), scale_sum += v[k];
+        Json j = Json::object();
+        j["part_size"] = o.scales[k];
+        j["largest_value"] = scale_largest;
+        j["mean_value"] = scale_values.empty() ? 0.0 : scale_sum / double(scale_values.size());
+        per_scale.push_back(j);
+      }
+      report["scales"] = per_scale;
+    }
     if(!o.cuts.empty()) {
       report["cuts"] = cuts.size();
       report["most_consistent_cut"] = cuts.empty() ? Json() : Json(cuts.front().consistency);
@@ -437,10 +469,20 @@ void add_partition_commands(CLI::App& app, std::function<int()>& run)
     cmd->add_option("--max-cuts", o->maximum_cuts, "With --cuts: the largest number of cuts written")
       ->capture_default_str()
       ->check(positive_count);
+    cmd->add_option("--scales", o->scales,
+                    "mincut: several part sizes at once (multiscale partition function), comma-separated: "
+                    "--edge-values gets one value per part size, the mesh and report the largest")
+      ->delimiter(',');
     add_sampling_options(cmd, o->sampling, *o, true);
     cmd->callback([o, cmd, &run]() {
       if(o->cuts.empty() && cmd->count("--max-cuts") > 0)
         throw CLI::ValidationError("--max-cuts", "needs --cuts");
+      if(!o->scales.empty() && !o->cuts.empty())
+        throw CLI::ValidationError("--scales", "give either --scales or --cuts, not both");
+      if(!o->scales.empty() && o->sampling.sampling_method != RC::MIN_CUT)
+        throw CLI::ValidationError("--scales", "needs the mincut sampler");
+      if(!o->scales.empty() && cmd->count("--part-size") > 0)
+        throw CLI::ValidationError("--scales", "give either --scales or --part-size, not both");
       run = [o]() { return run_partition(*o); };
     });
   }
