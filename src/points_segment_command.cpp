@@ -3,6 +3,7 @@
 
 // shape_analysis points segment IN --locations locations.csv --method mincut-auto|mincut|cc|all
 //                                  [--radius r] --output objects.ply|.las --report R.json
+//                                  [--interactive constraints.csv]
 // shape_analysis points evaluate --truth truth.json [--locations locations.csv] [--objects objects.ply]
 //                                 --report R.json
 // shape_analysis points evaluate --labels labels.csv --locations locations.csv --report R.json
@@ -197,11 +198,110 @@ namespace {
 // (the method by its command-line name).
 struct Segment_options
 {
-  std::string input, locations, output, report;
+  std::string input, locations, output, report, interactive;
   PSOR::Segment_objects_options segmentation;
   std::string method = segmentation_method_name(segmentation.segmentation_method);
   bool quiet = false, verbose = false;
 };
+
+// A constraint of --interactive: a point (x, y, z) the object must hold, or must not.
+struct Constraint
+{
+  bool foreground = true;
+  std::array<double, 3> point{{0, 0, 0}};
+};
+
+// The lines 'foreground,x,y,z' or 'background,x,y,z' of `path` (a first line that is not one, a
+// header, is skipped); Cli_error naming the line otherwise.
+std::vector<Constraint> read_constraints(const std::string& path)
+{
+  std::ifstream in(path);
+  if(!in)
+    throw Cli_error("cannot open the constraints '" + path + "'");
+  std::vector<Constraint> result;
+  std::string line;
+  for(std::size_t number = 1; std::getline(in, line); ++number) {
+    if(!line.empty() && line.back() == '\r')
+      line.pop_back();
+    if(line.find_first_not_of(" \t") == std::string::npos)
+      continue;
+    std::vector<std::string> field;
+    std::stringstream ss(line);
+    for(std::string f; std::getline(ss, f, ',');)
+      field.push_back(f.substr(f.find_first_not_of(" \t") == std::string::npos ? f.size() : f.find_first_not_of(" \t")));
+    Constraint c;
+    const bool kind = !field.empty() && (field[0].rfind("foreground", 0) == 0 || field[0].rfind("background", 0) == 0);
+    if(!kind && number == 1)
+      continue; // a header
+    if(!kind || field.size() != 4)
+      throw Cli_error(path + ": line " + std::to_string(number) + ": expected 'foreground,x,y,z' or 'background,x,y,z'");
+    c.foreground = field[0].rfind("foreground", 0) == 0;
+    for(std::size_t k = 0; k < 3; ++k) {
+      std::size_t used = 0;
+      try {
+        c.point[k] = std::stod(field[k + 1], &used);
+      } catch(const std::exception&) {
+        used = 0;
+      }
+      while(used < field[k + 1].size() && std::isspace(static_cast<unsigned char>(field[k + 1][used])))
+        ++used;
+      if(used == 0 || used != field[k + 1].size() || !std::isfinite(c.point[k]))
+        throw Cli_error(path + ": line " + std::to_string(number) + ": '" + field[k + 1] + "' is not a finite number");
+    }
+    result.push_back(c);
+  }
+  if(result.empty())
+    throw Cli_error(path + ": no constraint (lines 'foreground,x,y,z' or 'background,x,y,z')");
+  return result;
+}
+
+// `points segment --interactive`: the object of the one location, then each constraint (the
+// point above the ground nearest to it) added in order and the cut solved again; per step in
+// `steps` (JSON), the last segmentation returned.
+PSOR::Object_segmentation segment_interactively(const std::vector<Point_3>& kept, const std::array<double, 3>& location,
+                                                const PSOR::Segment_objects_options& so,
+                                                const std::vector<Constraint>& constraints, Json& steps)
+{
+  PSOR::Interactive_segmenter segmenter(kept, location,
+                                        PSOR::parameters::segmentation_method(so.segmentation_method)
+                                          .background_radius(so.background_radius)
+                                          .number_of_threads(so.number_of_threads));
+  const auto step_json = [&](const PSOR::Object_segmentation& g, const std::vector<std::size_t>& before) {
+    Json j = Json::object();
+    j["object_points"] = g.points.size();
+    std::vector<std::size_t> diff;
+    std::set_difference(g.points.begin(), g.points.end(), before.begin(), before.end(), std::back_inserter(diff));
+    j["points_added"] = diff.size();
+    diff.clear();
+    std::set_difference(before.begin(), before.end(), g.points.begin(), g.points.end(), std::back_inserter(diff));
+    j["points_removed"] = diff.size();
+    j["cut_cost"] = g.cut_cost;
+    j["seconds"] = g.seconds;
+    return j;
+  };
+  steps = Json::array();
+  Json first = step_json(segmenter.segmentation(), {});
+  first["constraint"] = Json();
+  first["radius"] = segmenter.segmentation().radius;
+  steps.push_back(first);
+  for(const Constraint& c : constraints) {
+    std::size_t nearest = 0;
+    double best = std::numeric_limits<double>::infinity();
+    for(std::size_t i = 0; i < kept.size(); ++i) {
+      const double d = CGAL::to_double(CGAL::squared_distance(kept[i], Point_3(c.point[0], c.point[1], c.point[2])));
+      if(d < best)
+        best = d, nearest = i;
+    }
+    const std::vector<std::size_t> before = segmenter.segmentation().points;
+    const PSOR::Object_segmentation& g = c.foreground ? segmenter.add_foreground(nearest) : segmenter.add_background(nearest);
+    Json j = step_json(g, before);
+    j["constraint"] = c.foreground ? "foreground" : "background";
+    j["at"] = Json(std::vector<double>{c.point[0], c.point[1], c.point[2]});
+    j["point_distance"] = std::sqrt(best);
+    steps.push_back(j);
+  }
+  return segmenter.segmentation();
+}
 
 int run_segment(const Segment_options& o)
 {
@@ -218,6 +318,17 @@ int run_segment(const Segment_options& o)
     throw Usage_error("--radius must be a positive number");
 
   const std::vector<Location> requested = read_locations(o.locations);
+  std::vector<Constraint> constraints;
+  if(!o.interactive.empty()) {
+    outputs.add_input(o.interactive);
+    if(so.segmentation_method != PSOR::Segmentation_method::MIN_CUT &&
+       so.segmentation_method != PSOR::Segmentation_method::MIN_CUT_AUTOMATIC_RADIUS)
+      throw Usage_error("--interactive needs a min-cut method (mincut or mincut-auto)");
+    if(requested.size() != 1)
+      throw Cli_error("--interactive segments one object: '" + o.locations + "' has " +
+                      std::to_string(requested.size()) + " locations");
+    constraints = read_constraints(o.interactive);
+  }
   progress.stage("reading " + o.input);
   CGAL::Point_set_3<Point_3> points;
   double read_seconds = 0;
@@ -242,7 +353,15 @@ int run_segment(const Segment_options& o)
   progress.stage("segmenting " + std::to_string(locations.size()) + " objects among " + std::to_string(kept.size()) +
                  " points above the ground");
   PSOR::Segmentation_result r;
-  if(!locations.empty()) {
+  Json steps;
+  if(!constraints.empty()) {
+    if(kept.empty())
+      throw Cli_error(o.input + ": every point is ground: nothing to segment");
+    r.objects.push_back(segment_interactively(kept, locations.front(), so, constraints, steps));
+    r.object_of_point.assign(kept.size(), PSOR::Segmentation_result::no_object);
+    for(std::size_t i : r.objects.front().points)
+      r.object_of_point[i] = 0;
+  } else if(!locations.empty()) {
     if(kept.empty())
       throw Cli_error(o.input + ": every point is ground: nothing to segment");
     r = PSOR::segment_objects(kept, locations,
@@ -278,6 +397,10 @@ int run_segment(const Segment_options& o)
     report["seconds_segmentation"] = seconds;
     report["seconds_graph"] = r.preparation_seconds;
     report["objects"] = objects_report(locations, r.objects);
+    if(!constraints.empty()) {
+      report["interactive"] = o.interactive;
+      report["steps"] = steps; // the first: before any constraint
+    }
     // "seconds": the whole run, reading included.
     stage_report(outputs, o.report, report, total.seconds(), read_seconds, total.seconds(), {{"objects", o.output}});
   }
@@ -492,6 +615,11 @@ void add_points_segment_commands(CLI::App* points, std::function<int()>& run)
                       "format 7: these as extra bytes, the classification 2 for ground, 1 for the rest")
     ->required();
   segment->add_option("--report", s->report, "JSON report (seconds; per object: points, radius, cut, seconds)");
+  segment->add_option("--interactive", s->interactive,
+                      "Constraints on the one object of --locations, added in order (.csv lines "
+                      "'foreground,x,y,z' or 'background,x,y,z': the point above the ground nearest to x,y,z "
+                      "must or must not be in it), the cut solved again after each (the report's steps); "
+                      "the output is the last result");
   segment->add_option("--threads", s->segmentation.number_of_threads, "Largest number of threads (0: all cores)")
     ->capture_default_str();
   segment->add_flag("-q,--quiet", s->quiet, "No progress on stderr");

@@ -148,3 +148,29 @@ expect_failure("tile-margin" points recognize "${WORK}/scene.ply" --tile-margin 
 expect_failure("csv" points recognize "${WORK}/scene.ply" --locations "${WORK}/bad.txt" ${bad})
 expect_failure("cannot open|nothing" points recognize "${WORK}/nothing.ply" ${bad})
 expect_failure("tile-origin" points recognize "${WORK}/scene.ply" --tile-origin 1 ${bad})
+
+# --interactive on the lamp post at (20.95, 6.09) (seed 6): a background constraint at 4 m up
+# takes points out and adds none; a foreground constraint on the sign 2.6 m away adds points and
+# takes none out (a cut only shrinks as sink capacities grow, and grows as source ones do).
+file(WRITE "${WORK}/lamp.csv" "x,y,z\n20.952,6.087,0.875\n")
+file(WRITE "${WORK}/constraints.csv" "kind,x,y,z\nbackground,20.952,6.087,4.875\nforeground,23.543,6.154,2.444\n")
+run_tool(points segment "${WORK}/scene.ply" --locations "${WORK}/lamp.csv" --method mincut -q
+         --interactive "${WORK}/constraints.csv" -o "${WORK}/interactive.ply" --report "${WORK}/interactive.json")
+file(READ "${WORK}/interactive.json" report)
+string(JSON steps LENGTH "${report}" steps)
+string(JSON first GET "${report}" steps 0 object_points)
+string(JSON added1 GET "${report}" steps 1 points_added)
+string(JSON removed1 GET "${report}" steps 1 points_removed)
+string(JSON added2 GET "${report}" steps 2 points_added)
+string(JSON removed2 GET "${report}" steps 2 points_removed)
+string(JSON final GET "${report}" objects 0 points)
+if(NOT steps EQUAL 3 OR first LESS 50)
+  message(FATAL_ERROR "interactive: ${steps} steps, the first object of ${first} points")
+endif()
+if(NOT added1 EQUAL 0 OR removed1 LESS 1 OR added2 LESS 1 OR NOT removed2 EQUAL 0)
+  message(FATAL_ERROR "interactive: background step +${added1} -${removed1}, foreground step +${added2} -${removed2}")
+endif()
+math(EXPR expected "${first} - ${removed1} + ${added2}")
+if(NOT final EQUAL expected)
+  message(FATAL_ERROR "interactive: the output object has ${final} points, the steps say ${expected}")
+endif()
