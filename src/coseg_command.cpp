@@ -3,12 +3,13 @@
 
 // shape_analysis coseg IN1 IN2 ... --segments K --oversegments k --output-dir DIR --report R.json
 //   [--known MESH=FILE.seg ...] [--prior MESH=FILE.seg ...]
-// shape_analysis coseg IN --symmetry-plane a,b,c,d --output-dir DIR
+// shape_analysis coseg IN --symmetry-plane a,b,c,d | --symmetric --output-dir DIR
 
 #include "cli_common.h"
 
 #include <CGAL/Consistent_segmentation/Consistent_segmentation_options.h>
 #include <CGAL/Consistent_segmentation/consistent_segmentation.h>
+#include <CGAL/Surface_mesh_symmetrization/detect_reflective_symmetries.h>
 
 #include <algorithm>
 #include <cmath>
@@ -32,7 +33,8 @@ struct Coseg_command_options
   std::vector<std::string> inputs;
   std::string output_dir, report, symmetry_plane;
   std::vector<std::string> known, prior; // MESH=FILE.seg
-  bool symmetric = false;                 // --symmetry-plane given
+  bool symmetric = false;                 // --symmetry-plane or --symmetric given
+  bool detect_plane = false;              // --symmetric: the plane detected
   CS::Consistent_segmentation_options coseg;
   bool no_refinement = false;
   bool quiet = false;
@@ -190,12 +192,13 @@ int run_coseg(const Coseg_command_options& o)
     throw Usage_error("no input mesh");
   std::array<double, 4> plane{};
   if(symmetric) {
+    const std::string option = o.detect_plane ? "--symmetric" : "--symmetry-plane";
     if(m != 1)
-      throw Usage_error("--symmetry-plane segments one mesh, got " + std::to_string(m) +
-                        " input meshes");
+      throw Usage_error(option + " segments one mesh, got " + std::to_string(m) + " input meshes");
     if(!o.known.empty())
-      throw Usage_error("--known cannot be used with --symmetry-plane");
-    plane = parse_plane(o.symmetry_plane);
+      throw Usage_error("--known cannot be used with " + option);
+    if(!o.detect_plane)
+      plane = parse_plane(o.symmetry_plane);
   }
   std::vector<std::string> stems(m);
   {
@@ -308,6 +311,25 @@ int run_coseg(const Coseg_command_options& o)
                     .progress_callback(on_progress);
   Stopwatch segmenting;
   CS::Consistent_segmentation_result r;
+  double detection_seconds = 0, detected_support = 1;
+  if(o.detect_plane) { // the best reflective plane of the mesh
+    progress.stage("detecting the symmetry plane");
+    Stopwatch detecting;
+    std::vector<CGAL::Surface_mesh_symmetrization::Symmetry<Kernel>> found;
+    CGAL::Surface_mesh_symmetrization::detect_reflective_symmetries(
+      meshes[0], std::back_inserter(found),
+      CGAL::Surface_mesh_symmetrization::parameters::maximum_number_of_symmetries(1)
+        .random_seed(co.random_seed)
+        .number_of_threads(co.number_of_threads));
+    if(found.empty())
+      throw Cli_error("no reflective symmetry found (give the plane with --symmetry-plane a,b,c,d)");
+    const auto& q = found.front().plane;
+    plane = {{CGAL::to_double(q.a()), CGAL::to_double(q.b()), CGAL::to_double(q.c()), CGAL::to_double(q.d())}};
+    detected_support = found.front().support_fraction;
+    detection_seconds = detecting.seconds();
+    progress.stage("segmenting " + std::to_string(num_faces(meshes[0])) + " faces symmetrically into " +
+                   std::to_string(co.number_of_segments) + " segments");
+  }
   if(symmetric) {
     const Kernel::Plane_3 p(plane[0], plane[1], plane[2], plane[3]);
     if(any_prior)
@@ -381,6 +403,11 @@ int run_coseg(const Coseg_command_options& o)
     parameters["number_of_threads"] = co.number_of_threads;
     parameters["symmetry_plane"] =
       symmetric ? Json(std::vector<double>(plane.begin(), plane.end())) : Json();
+    report["plane_detected"] = o.detect_plane;
+    if(o.detect_plane) {
+      report["plane_support"] = detected_support;
+      report["seconds_detection"] = detection_seconds;
+    }
     report["parameters"] = parameters;
     report["segments"] = r.number_of_segments;
     report["meshes_of_segment"] = r.meshes_of_segment;
@@ -480,8 +507,13 @@ void add_coseg_command(CLI::App& app, std::function<int()>& run,
   cmd->add_flag("-q,--quiet", options->quiet, "No progress on stderr");
   cmd->add_flag("-v,--verbose", options->verbose,
                 "Progress on stderr even when it is not a terminal");
-  cmd->callback([options, plane, &run]() {
-    options->symmetric = plane->count() > 0;
+  CLI::Option* detect = cmd->add_flag("--symmetric", options->detect_plane,
+                                      "Segment the one input mesh symmetrically about its best detected "
+                                      "reflective plane (the report has it)");
+  cmd->callback([options, plane, detect, &run]() {
+    if(plane->count() > 0 && detect->count() > 0)
+      throw CLI::ValidationError("--symmetric", "give either --symmetric or --symmetry-plane, not both");
+    options->symmetric = plane->count() > 0 || options->detect_plane;
     run = [options]() { return run_coseg(*options); };
   });
 }

@@ -1,0 +1,25 @@
+cmake_minimum_required(VERSION 3.19)
+# `shape_analysis coseg --symmetric` on CGAL's cow (mirror-symmetric about z = 0): the plane is
+# detected (the report's symmetry_plane is z = 0 within 0.1 degree, plane_detected true, its
+# support above 0.9) and the mesh segmented symmetrically into 8 segments.
+#   cmake -DEXE=<tool> -DMESH=<cow.off> -DWORK=<dir> -P check_coseg_symmetric.cmake
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}")
+include(${CMAKE_CURRENT_LIST_DIR}/run_tool.cmake)
+run_tool(coseg "${MESH}" --symmetric -k 8 --points 300 -q --output-dir "${WORK}/out" --report "${WORK}/r.json")
+file(READ "${WORK}/r.json" report)
+string(JSON a GET "${report}" parameters symmetry_plane 0)
+string(JSON b GET "${report}" parameters symmetry_plane 1)
+string(JSON c GET "${report}" parameters symmetry_plane 2)
+string(JSON detected GET "${report}" plane_detected)
+string(JSON support GET "${report}" plane_support)
+string(JSON segments GET "${report}" segments)
+if(NOT detected OR support LESS 0.9 OR NOT segments EQUAL 8)
+  message(FATAL_ERROR "detected ${detected}, support ${support}, ${segments} segments")
+endif()
+if(NOT (c GREATER 0.99999 OR c LESS -0.99999))
+  message(FATAL_ERROR "detected plane ${a},${b},${c}: not z = 0")
+endif()
+if(NOT EXISTS "${WORK}/out/cow.seg")
+  message(FATAL_ERROR "cow.seg not written")
+endif()
