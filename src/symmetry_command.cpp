@@ -228,7 +228,8 @@ int run_symmetrize(const Symmetrize_command_options& o)
   Symmetry symmetry;
   double detect_seconds = 0;
   bool detected = false;
-  const auto r = symmetrize_input(o, input, progress, symmetry, detect_seconds, detected);
+  std::vector<Symmetry> all;
+  const auto r = symmetrize_input(o, input, progress, symmetry, detect_seconds, detected, &all);
   const double seconds = watch.seconds();
   const std::vector<Point_3> points = moved_points(input, input.mesh);
   if(!o.output_off.empty()) {
@@ -242,7 +243,7 @@ int run_symmetrize(const Symmetrize_command_options& o)
   if(!o.report.empty()) {
     Json report = input_report("symmetry symmetrize", o.input, input);
     report["parameters"] = symmetrization_parameters(o);
-    add_symmetrization_report(report, r, symmetry, detected, detect_seconds);
+    add_symmetrization_report(report, r, symmetry, detected, detect_seconds, all);
     stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(),
                  {{"mesh", o.output_off}, {"map", o.map}});
   }
@@ -285,10 +286,11 @@ int run_enhance(const Enhance_options& o)
     Symmetry symmetry;
     double detect_seconds = 0;
     bool detected = false;
-    const auto r = symmetrize_input(o, input, progress, symmetry, detect_seconds, detected);
+    std::vector<Symmetry> all;
+    const auto r = symmetrize_input(o, input, progress, symmetry, detect_seconds, detected, &all);
     symmetric = moved_points(input, input.mesh);
     report["parameters"] = symmetrization_parameters(o);
-    add_symmetrization_report(report, r, symmetry, detected, detect_seconds);
+    add_symmetrization_report(report, r, symmetry, detected, detect_seconds, all);
   }
   std::vector<Point_3> enhanced(original.size());
   for(std::size_t i = 0; i < original.size(); ++i)
@@ -507,6 +509,7 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run)
                   "(0: no refinement); smaller, more symmetric and more distorted")
     ->capture_default_str();
   add_rotation_option(sym, *s);
+  add_several_planes_option(sym, *s);
   sym->callback([s, sym, &run]() {
     note_rotation_option(sym, *s);
     run = [s]() { return run_symmetrize(*s); };
@@ -528,6 +531,7 @@ void add_symmetry_command(CLI::App& app, std::function<int()>& run)
   enhance->add_option("--final-weight", es.final_symmetry_weight, "As for symmetrize")->capture_default_str();
   enhance->add_option("--target-error", es.target_symmetry_error, "As for symmetrize")->capture_default_str();
   add_rotation_option(enhance, *e);
+  add_several_planes_option(enhance, *e);
   enhance->callback([e, enhance, &run]() {
     note_rotation_option(enhance, *e);
     run = [e]() { return run_enhance(*e); };

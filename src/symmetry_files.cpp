@@ -19,7 +19,10 @@ void add_common_options(CLI::App* cmd, Common_options& o, bool with_plane)
   cmd->add_option("input", o.input, "Triangle mesh (.off, .ply, .obj, .stl)")->required();
   if(with_plane)
     cmd->add_option("--plane", o.plane,
-                    "Symmetry plane a,b,c,d (a x + b y + c z + d = 0); detected when absent");
+                    "Symmetry plane a,b,c,d (a x + b y + c z + d = 0); detected when absent (symmetrize "
+                    "and enhance: repeat it for several planes)")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast)
+      ->each([&o](const std::string& v) { o.planes.push_back(v); });
   cmd->add_option("--samples", o.detection.number_of_samples, "Number of points sampled for the detection (>= 20)")
     ->capture_default_str();
   cmd->add_option("--seed", o.detection.random_seed, "Random seed of the detection (same seed, same result)")
@@ -98,12 +101,23 @@ Symmetry parse_rotation(const std::string& text)
   }
 }
 
+void add_several_planes_option(CLI::App* cmd, Symmetrize_command_options& o)
+{
+  cmd->add_option("--detected-planes", o.detected_planes,
+                  "Without --plane: symmetrize about this many of the best detected planes at once, each "
+                  "weighted by its support (partial symmetries)")
+    ->capture_default_str()
+    ->check(positive_count);
+}
+
 void check_symmetry_options(const Symmetrize_command_options& o)
 {
   if(o.rotation_requested && !o.plane.empty())
     throw Usage_error("give either --plane or --rotation, not both");
-  if(!o.plane.empty())
-    parse_plane(o.plane);
+  if(o.detected_planes != 1 && (!o.plane.empty() || o.rotation_requested))
+    throw Usage_error("--detected-planes is for detected planes: not with --plane or --rotation");
+  for(const std::string& p : o.planes)
+    parse_plane(p);
   if(o.rotation_requested && !o.rotation.empty())
     parse_rotation(o.rotation);
 }
@@ -148,6 +162,8 @@ Symmetry symmetry_of(const Common_options& o, const Mesh& mesh, Progress& progre
                      bool& detected)
 {
   Stopwatch watch;
+  if(o.planes.size() > 1)
+    throw Usage_error("one --plane only (symmetrize and enhance take several)");
   detected = o.plane.empty();
   if(!detected) {
     const Symmetry s = SMS::reflective_symmetry<Kernel>(parse_plane(o.plane));
@@ -199,8 +215,10 @@ std::string plane_text(const Symmetry& s)
 // Symmetrizes `input.mesh` in place; returns the result and the symmetry used.
 SMS::Symmetrization_result<Kernel> symmetrize_input(const Symmetrize_command_options& o, Input_mesh& input,
                                                     Progress& progress, Symmetry& symmetry,
-                                                    double& detect_seconds, bool& detected)
+                                                    double& detect_seconds, bool& detected,
+                                                    std::vector<Symmetry>* all)
 {
+  std::vector<Symmetry> symmetries;
   if(o.rotation_requested) {
     Stopwatch watch;
     detected = o.rotation.empty();
@@ -219,14 +237,37 @@ SMS::Symmetrization_result<Kernel> symmetrize_input(const Symmetrize_command_opt
     } else
       symmetry = parse_rotation(o.rotation);
     detect_seconds = watch.seconds();
+  } else if(o.planes.size() > 1) { // several planes given
+    detected = false;
+    for(const std::string& p : o.planes)
+      symmetries.push_back(SMS::reflective_symmetry<Kernel>(parse_plane(p)));
+    symmetry = symmetries.front();
+  } else if(o.plane.empty() && o.detected_planes > 1) { // the best planes detected, with their supports
+    Stopwatch watch;
+    detected = true;
+    progress.stage("detecting the symmetry planes");
+    const SMS::Detect_reflective_symmetries_options& d = o.detection;
+    SMS::detect_reflective_symmetries(input.mesh, std::back_inserter(symmetries),
+                                      SMS::parameters::number_of_samples(d.number_of_samples)
+                                        .random_seed(d.random_seed)
+                                        .number_of_threads(d.number_of_threads)
+                                        .maximum_number_of_symmetries(o.detected_planes));
+    detect_seconds = watch.seconds();
+    if(symmetries.empty())
+      throw Cli_error("no reflective symmetry found (give one with --plane a,b,c,d)");
+    symmetry = symmetries.front();
   } else
     symmetry = symmetry_of(o, input.mesh, progress, detect_seconds, detected);
+  if(symmetries.empty())
+    symmetries.push_back(symmetry);
+  if(all != nullptr)
+    *all = symmetries;
   progress.stage("symmetrizing " + std::to_string(num_vertices(input.mesh)) + " vertices " +
                  (symmetry.is_reflection ? "about the plane " + plane_text(symmetry)
                                          : std::string("under the turn ") + rotation_json(symmetry).dump()));
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
   const SMS::Symmetrize_options& so = o.symmetrization;
-  auto result = SMS::symmetrize(input.mesh, std::vector<Symmetry>{symmetry},
+  auto result = SMS::symmetrize(input.mesh, symmetries,
                                 SMS::parameters::number_of_iterations(so.number_of_iterations)
                                   .shape_weight(so.shape_weight)
                                   .displacement_weight(so.displacement_weight)
@@ -262,8 +303,18 @@ Json symmetrization_parameters(const Symmetrize_command_options& o)
 }
 
 void add_symmetrization_report(Json& report, const SMS::Symmetrization_result<Kernel>& r,
-                               const Symmetry& s, bool detected, double detect_seconds)
+                               const Symmetry& s, bool detected, double detect_seconds,
+                               const std::vector<Symmetry>& all)
 {
+  if(all.size() > 1) { // each plane, with its support fraction (1 for a plane given)
+    Json planes = Json::array();
+    for(const Symmetry& x : all) {
+      Json j = plane_json(x);
+      j["support"] = x.support_fraction;
+      planes.push_back(j);
+    }
+    report["planes"] = planes;
+  }
   if(s.is_reflection) {
     report["plane"] = plane_json(s);
     report["plane_detected"] = detected;

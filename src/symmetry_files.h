@@ -36,6 +36,7 @@ typedef SMS::Symmetry<Kernel> Symmetry;
 struct Common_options
 {
   std::string input, report, plane;
+  std::vector<std::string> planes; // every --plane given (symmetrize and enhance take several)
   SMS::Detect_reflective_symmetries_options detection;
   bool quiet = false;
   bool verbose = false;
@@ -49,11 +50,14 @@ struct Symmetrize_command_options : Common_options
   // value is given.
   std::string rotation;
   bool rotation_requested = false;
+  std::size_t detected_planes = 1; // without --plane: how many of the best detected planes
 };
 
 // Adds --rotation to `cmd` (symmetrize, enhance); `o.rotation_requested` is set by
 // note_rotation_option() from the command's callback.
 void add_rotation_option(CLI::App* cmd, Symmetrize_command_options& o);
+// Adds --detected-planes to `cmd` (symmetrize, enhance).
+void add_several_planes_option(CLI::App* cmd, Symmetrize_command_options& o);
 void note_rotation_option(const CLI::App* cmd, Symmetrize_command_options& o);
 
 // The turn of --rotation ax,ay,az,px,py,pz,k: by 2 pi / k about the axis through (px,py,pz) along
@@ -85,15 +89,19 @@ std::string plane_text(const Symmetry& s);
 
 // Symmetrizes `input.mesh` in place (the plane or, with --rotation, the turn given or detected);
 // returns the result and the symmetry used.
+// With several planes (--plane repeated, or --detected-planes N), `symmetry` is the first and
+// `all` (when given) receives them all.
 SMS::Symmetrization_result<Kernel> symmetrize_input(const Symmetrize_command_options& o, Input_mesh& input,
                                                     Progress& progress, Symmetry& symmetry,
-                                                    double& detect_seconds, bool& detected);
+                                                    double& detect_seconds, bool& detected,
+                                                    std::vector<Symmetry>* all = nullptr);
 
 // The options of symmetrize() as the library's named parameters, and the report's figures of a
 // symmetrization.
 Json symmetrization_parameters(const Symmetrize_command_options& o);
 void add_symmetrization_report(Json& report, const SMS::Symmetrization_result<Kernel>& r,
-                               const Symmetry& s, bool detected, double detect_seconds);
+                               const Symmetry& s, bool detected, double detect_seconds,
+                               const std::vector<Symmetry>& all = {});
 
 
 // Adds `remesh` and `decimate` to the `symmetry` command (symmetry_remesh_command.cpp).
