@@ -66,8 +66,9 @@ std::string name_of(const std::map<std::string, Value>& names, Value value)
   return std::string();
 }
 
-// `symmetry detect --rotational`: the axes, their orders and supports.
-int run_detect_rotations(const Detect_options& o)
+// `symmetry detect`: the planes, or with --rotational the axes (their orders), with their scores
+// and supports.
+int run_detect(const Detect_options& o)
 {
   Stopwatch total;
   Progress progress("symmetry detect", o.quiet, o.verbose);
@@ -78,135 +79,89 @@ int run_detect_rotations(const Detect_options& o)
   outputs.add_optional_output(o.report, "report", {".json"});
   double read_seconds = 0;
   const Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
-  progress.stage("detecting rotational symmetries of " + std::to_string(num_faces(input.mesh)) + " faces");
-  Stopwatch watch;
-  std::vector<SMS::Rotational_symmetry<Kernel>> found;
-  SMS::Detect_rotational_symmetries_options d = o.rotation;
-  d.number_of_samples = o.detection.number_of_samples;
-  d.random_seed = o.detection.random_seed;
-  d.number_of_threads = o.detection.number_of_threads;
-  d.maximum_number_of_symmetries = o.detection.maximum_number_of_symmetries;
-  d.support_tolerance = o.detection.support_tolerance;
-  if(o.minimum_support_given)
-    d.minimum_support = o.detection.minimum_support;
-  SMS::detect_rotational_symmetries(input.mesh, std::back_inserter(found),
-                                    SMS::parameters::number_of_samples(d.number_of_samples)
-                                      .random_seed(d.random_seed)
-                                      .number_of_threads(d.number_of_threads)
-                                      .maximum_number_of_symmetries(d.maximum_number_of_symmetries)
-                                      .maximum_order(d.maximum_order)
-                                      .minimum_support(d.minimum_support)
-                                      .support_tolerance(d.support_tolerance));
-  const double seconds = watch.seconds();
-  progress.done();
-  if(!o.output_ply.empty()) {
-    if(found.empty())
-      throw Cli_error("no rotational symmetry found: no support mesh to write");
-    progress.stage("writing " + o.output_ply);
-    const std::vector<double> support = per_input_face(input, found.front().support, 0.0);
-    outputs.stage(o.output_ply, true, [&](std::ostream& out) {
-      write_support_ply(out, input.points, input.triangles, support);
-    });
-  }
-  const auto order_text = [](std::size_t k) { return k == 0 ? std::string("revolution") : std::to_string(k) + "-fold"; };
-  if(!o.report.empty()) {
-    Json report = input_report("symmetry detect", o.input, input);
-    Json parameters = Json::object();
-    parameters["number_of_samples"] = d.number_of_samples;
-    parameters["random_seed"] = d.random_seed;
-    parameters["maximum_number_of_symmetries"] = d.maximum_number_of_symmetries;
-    parameters["maximum_order"] = d.maximum_order;
-    parameters["minimum_support"] = d.minimum_support;
-    parameters["support_tolerance"] = d.support_tolerance;
-    parameters["number_of_threads"] = d.number_of_threads;
-    report["parameters"] = parameters;
-    Json rotations = Json::array();
-    for(const auto& r : found) {
-      Json j = Json::object();
-      j["axis"] = Json::array({r.axis.x(), r.axis.y(), r.axis.z()});
-      j["point"] = Json::array({r.point.x(), r.point.y(), r.point.z()});
-      j["order"] = r.order; // 0: a surface of revolution
-      j["kind"] = order_text(r.order);
-      j["score"] = r.score;
-      j["support"] = r.support_fraction;
-      rotations.push_back(j);
-    }
-    report["rotations"] = rotations;
-    stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(),
-                 {{"support_mesh", o.output_ply}});
-  }
-  outputs.commit();
-  std::cout << o.input << ": " << found.size() << " rotational symmetr" << (found.size() == 1 ? "y" : "ies")
-            << " in " << seconds << " s\n";
-  for(const auto& r : found)
-    std::cout << "  " << order_text(r.order) << " about the axis through " << r.point << " along " << r.axis
-              << "  score " << r.score << "  support " << r.support_fraction << '\n';
-  return 0;
-}
-
-int run_detect(const Detect_options& o)
-{
+  const std::string kind = o.rotational ? "rotational" : "reflective";
+  progress.stage("detecting " + kind + " symmetries of " + std::to_string(num_faces(input.mesh)) + " faces");
+  // The options as the library's named parameters (a rotation's minimum support has its own default).
+  SMS::Detect_reflective_symmetries_options d = o.detection;
+  if(o.rotational && !o.minimum_support_given)
+    d.minimum_support = o.rotation.minimum_support;
+  Json parameters = Json::object();
+  parameters["number_of_samples"] = d.number_of_samples;
+  parameters["random_seed"] = d.random_seed;
+  parameters["maximum_number_of_symmetries"] = d.maximum_number_of_symmetries;
   if(o.rotational)
-    return run_detect_rotations(o);
-  Stopwatch total;
-  Progress progress("symmetry detect", o.quiet, o.verbose);
-  Output_files outputs;
-  outputs.add_input(o.input);
-  if(!o.output_ply.empty()) {
-    outputs.add_output(o.output_ply, "support mesh", {".ply"});
-  }
-  outputs.add_optional_output(o.report, "report", {".json"});
-  double read_seconds = 0;
-  const Input_mesh input = read_input_mesh(o.input, progress, read_seconds);
-  progress.stage("detecting reflective symmetries of " + std::to_string(num_faces(input.mesh)) + " faces");
+    parameters["maximum_order"] = o.rotation.maximum_order;
+  parameters["minimum_support"] = d.minimum_support;
+  parameters["support_tolerance"] = d.support_tolerance;
+  parameters["number_of_threads"] = d.number_of_threads;
+  const auto np = SMS::parameters::number_of_samples(d.number_of_samples)
+                    .random_seed(d.random_seed)
+                    .number_of_threads(d.number_of_threads)
+                    .maximum_number_of_symmetries(d.maximum_number_of_symmetries)
+                    .minimum_support(d.minimum_support)
+                    .support_tolerance(d.support_tolerance);
   Stopwatch watch;
-  std::vector<Symmetry> found;
-  const SMS::Detect_reflective_symmetries_options& d = o.detection;
-  SMS::detect_reflective_symmetries(input.mesh, std::back_inserter(found),
-                                    SMS::parameters::number_of_samples(d.number_of_samples)
-                                      .random_seed(d.random_seed)
-                                      .number_of_threads(d.number_of_threads)
-                                      .maximum_number_of_symmetries(d.maximum_number_of_symmetries)
-                                      .minimum_support(d.minimum_support)
-                                      .support_tolerance(d.support_tolerance));
+  Json found = Json::array();         // per symmetry, its report entry
+  std::vector<std::string> lines;     // and its line on stdout
+  std::vector<double> best_support;   // per face, of the best one
+  if(o.rotational) {
+    std::vector<SMS::Rotational_symmetry<Kernel>> r;
+    SMS::detect_rotational_symmetries(input.mesh, std::back_inserter(r), np.maximum_order(o.rotation.maximum_order));
+    for(const auto& x : r) {
+      const std::string order = x.order == 0 ? std::string("revolution") : std::to_string(x.order) + "-fold";
+      Json j = Json::object();
+      j["axis"] = Json::array({x.axis.x(), x.axis.y(), x.axis.z()});
+      j["point"] = Json::array({x.point.x(), x.point.y(), x.point.z()});
+      j["order"] = x.order; // 0: a surface of revolution
+      j["kind"] = order;
+      j["score"] = x.score;
+      j["support"] = x.support_fraction;
+      found.push_back(j);
+      std::ostringstream line;
+      line << order << " about the axis through " << x.point << " along " << x.axis << "  score " << x.score
+           << "  support " << x.support_fraction;
+      lines.push_back(line.str());
+    }
+    if(!r.empty())
+      best_support = r.front().support;
+  } else {
+    std::vector<Symmetry> r;
+    SMS::detect_reflective_symmetries(input.mesh, std::back_inserter(r), np);
+    for(const Symmetry& x : r) {
+      Json j = plane_json(x);
+      j["score"] = x.score;
+      j["support"] = x.support_fraction;
+      found.push_back(j);
+      std::ostringstream line;
+      line << "plane " << plane_text(x) << "  score " << x.score << "  support " << x.support_fraction;
+      lines.push_back(line.str());
+    }
+    if(!r.empty())
+      best_support = r.front().support;
+  }
   const double seconds = watch.seconds();
   progress.done();
   if(!o.output_ply.empty()) {
     if(found.empty())
-      throw Cli_error("no reflective symmetry found: no support mesh to write");
+      throw Cli_error("no " + kind + " symmetry found: no support mesh to write");
     progress.stage("writing " + o.output_ply);
-    const std::vector<double> support = per_input_face(input, found.front().support, 0.0);
+    const std::vector<double> support = per_input_face(input, best_support, 0.0);
     outputs.stage(o.output_ply, true, [&](std::ostream& out) {
       write_support_ply(out, input.points, input.triangles, support);
     });
   }
   if(!o.report.empty()) {
     Json report = input_report("symmetry detect", o.input, input);
-    // The options as the library's named parameters.
-    Json parameters = Json::object();
-    parameters["number_of_samples"] = d.number_of_samples;
-    parameters["random_seed"] = d.random_seed;
-    parameters["maximum_number_of_symmetries"] = d.maximum_number_of_symmetries;
-    parameters["minimum_support"] = d.minimum_support;
-    parameters["support_tolerance"] = d.support_tolerance;
-    parameters["number_of_threads"] = d.number_of_threads;
     report["parameters"] = parameters;
-    Json planes = Json::array();
-    for(const Symmetry& s : found) {
-      Json p = plane_json(s);
-      p["score"] = s.score;
-      p["support"] = s.support_fraction;
-      planes.push_back(p);
-    }
-    report["planes"] = planes;
+    report[o.rotational ? "rotations" : "planes"] = found;
     stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(),
                  {{"support_mesh", o.output_ply}});
   }
   outputs.commit();
-  std::cout << o.input << ": " << found.size() << " reflective symmetr" << (found.size() == 1 ? "y" : "ies")
+  std::cout << o.input << ": " << found.size() << " " << kind << " symmetr" << (found.size() == 1 ? "y" : "ies")
             << " in " << seconds << " s\n";
-  for(const Symmetry& s : found)
-    std::cout << "  plane " << plane_text(s) << "  score " << s.score << "  support " << s.support_fraction << '\n';
+  for(const std::string& line : lines)
+    std::cout << "  " << line << '\n';
   return 0;
 }
 

@@ -170,6 +170,26 @@ Mesh_arrays<TriangleMesh> read_mesh_np(const TriangleMesh& tm, const NamedParame
   return read_mesh(tm, vpm, to_vector, who);
 }
 
+// The surface of `tm` for a detection (reflective or rotational), after the checks of the options
+// they share (`number_of_samples`, `minimum_support`, `support_tolerance`) and of the mesh's
+// area; Bad_input naming `who` otherwise.
+template <typename TriangleMesh, typename NamedParameters, typename Options>
+Mesh_arrays<TriangleMesh> detection_surface(const TriangleMesh& tm, const NamedParameters& np, const Options& o,
+                                            const std::string& who)
+{
+  if(o.number_of_samples < 20 || o.number_of_samples > 1000000)
+    throw Bad_input(who + ": number_of_samples must be between 20 and 1000000");
+  if(!(o.minimum_support >= 0 && o.minimum_support <= 1))
+    throw Bad_input(who + ": minimum_support must be in [0, 1]");
+  if(!(o.support_tolerance > 0) || !std::isfinite(o.support_tolerance))
+    throw Bad_input(who + ": support_tolerance must be a positive number");
+  Mesh_arrays<TriangleMesh> mesh = read_mesh_np(tm, np, who);
+  const double area = mesh.surface.total_area();
+  if(!(area > 0) || !std::isfinite(area))
+    throw Bad_input(who + ": the mesh has no area");
+  return mesh;
+}
+
 } // namespace internal
 /// \endcond
 

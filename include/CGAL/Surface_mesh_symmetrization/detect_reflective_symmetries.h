@@ -154,19 +154,7 @@ OutputIterator detect_reflective_symmetries(const TriangleMesh& tm, OutputIterat
   const std::string who = "detect_reflective_symmetries";
 
   const Detect_reflective_symmetries_options o = detect_reflective_symmetries_options(np);
-  if(o.number_of_samples < 20)
-    throw Bad_input(who + ": number_of_samples must be at least 20");
-  if(o.number_of_samples > 1000000)
-    throw Bad_input(who + ": number_of_samples must be at most 1000000 (every pair votes)");
-  if(!(o.minimum_support >= 0 && o.minimum_support <= 1))
-    throw Bad_input(who + ": minimum_support must be in [0, 1]");
-  if(!(o.support_tolerance > 0) || !std::isfinite(o.support_tolerance))
-    throw Bad_input(who + ": support_tolerance must be a positive number");
-
-  const internal::Mesh_arrays<TriangleMesh> mesh = internal::read_mesh_np(tm, np, who);
-  const double area = mesh.surface.total_area();
-  if(!(area > 0) || !std::isfinite(area))
-    throw Bad_input(who + ": the mesh has no area");
+  const internal::Mesh_arrays<TriangleMesh> mesh = internal::detection_surface(tm, np, o, who);
   for(const internal::Detected_plane& d : internal::detect_planes(mesh.surface, o))
     *out++ = internal::symmetry_of<Kernel>(d);
   return out;

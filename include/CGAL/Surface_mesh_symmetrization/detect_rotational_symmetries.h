@@ -210,19 +210,9 @@ OutputIterator detect_rotational_symmetries(const TriangleMesh& tm, OutputIterat
   typedef typename Kernel::FT FT;
   const std::string who = "detect_rotational_symmetries";
   const Detect_rotational_symmetries_options o = detect_rotational_symmetries_options(np);
-  if(o.number_of_samples < 20 || o.number_of_samples > 1000000)
-    throw Bad_input(who + ": number_of_samples must be between 20 and 1000000");
   if(o.maximum_order < 2 || o.maximum_order > 360)
     throw Bad_input(who + ": maximum_order must be between 2 and 360");
-  if(!(o.minimum_support >= 0 && o.minimum_support <= 1))
-    throw Bad_input(who + ": minimum_support must be in [0, 1]");
-  if(!(o.support_tolerance > 0) || !std::isfinite(o.support_tolerance))
-    throw Bad_input(who + ": support_tolerance must be a positive number");
-
-  const internal::Mesh_arrays<TriangleMesh> mesh = internal::read_mesh_np(tm, np, who);
-  const double area = mesh.surface.total_area();
-  if(!(area > 0) || !std::isfinite(area))
-    throw Bad_input(who + ": the mesh has no area");
+  const internal::Mesh_arrays<TriangleMesh> mesh = internal::detection_surface(tm, np, o, who);
   for(const internal::Detected_rotation& d : internal::detect_rotations(mesh.surface, o)) {
     Rotational_symmetry<Kernel> r;
     r.point = typename Kernel::Point_3(FT(d.point.x), FT(d.point.y), FT(d.point.z));
