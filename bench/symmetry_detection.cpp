@@ -73,6 +73,13 @@ CGAL::Aff_transformation_3<Kernel> random_motion(std::uint64_t seed, double diag
     t * u.x * u.z - s * u.y, t * u.y * u.z + s * u.x, t * u.z * u.z + c, tr.z, 1);
 }
 
+Mesh moved_by(Mesh m, const CGAL::Aff_transformation_3<Kernel>& motion)
+{
+  for(auto v : vertices(m))
+    m.point(v) = motion.transform(m.point(v));
+  return m;
+}
+
 // The rotational benchmark (--rotational): see the head of the file.
 int run_rotational(const std::string& data, std::size_t poses, std::size_t threads, const std::string& output)
 {
@@ -114,10 +121,8 @@ int run_rotational(const std::string& data, std::size_t poses, std::size_t threa
     entry["expected_order"] = c.order >= 0 ? Json(c.order) : Json();
     Json pose_list = Json::array();
     for(std::size_t k = 0; k < poses; ++k) {
-      Mesh moved = c.mesh;
       const auto motion = random_motion(k + 1, diagonal);
-      for(auto v : vertices(moved))
-        moved.point(v) = motion.transform(moved.point(v));
+      const Mesh moved = moved_by(c.mesh, motion);
       const auto start = std::chrono::steady_clock::now();
       std::vector<SMS::Rotational_symmetry<Kernel>> found;
       SMS::detect_rotational_symmetries(moved, std::back_inserter(found), SMS::parameters::number_of_threads(threads));
@@ -233,10 +238,8 @@ int main(int argc, char** argv)
     Json pose_list = Json::array();
     double max_seconds = 0, max_ratio = 0;
     for(std::size_t k = 0; k < poses; ++k) {
-      Mesh moved = mesh;
       const auto motion = random_motion(k + 1, diagonal);
-      for(auto v : vertices(moved))
-        moved.point(v) = motion.transform(moved.point(v));
+      const Mesh moved = moved_by(mesh, motion);
       const auto start = std::chrono::steady_clock::now();
       std::vector<SMS::Symmetry<Kernel>> found;
       SMS::detect_reflective_symmetries(moved, std::back_inserter(found),

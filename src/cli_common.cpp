@@ -338,6 +338,20 @@ double bounding_box_diagonal(const std::vector<Point_3>& points)
   return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
+double finite_number(const std::string& cell, const std::string& where)
+{
+  double v = 0;
+  std::size_t used = 0;
+  try {
+    v = std::stod(cell, &used);
+  } catch(const std::exception&) {
+    used = 0;
+  }
+  if(cell.empty() || used != cell.size() || !std::isfinite(v))
+    throw Cli_error(where + "'" + cell + "' is not a finite number");
+  return v;
+}
+
 const CLI::Validator positive_count(
   [](std::string& text) {
     std::size_t used = 0;

@@ -164,6 +164,9 @@ void check_input_file(const std::string& path);
 // `execute` (the fuzzer of the option parsing), 0 when the command line is accepted.
 int run_command_line(int argc, char** argv, bool execute);
 
+// The finite number of a cell; throws Cli_error `where` + why otherwise.
+double finite_number(const std::string& cell, const std::string& where);
+
 // A count option's check: a whole number >= 1, else "must be a positive whole number (got x)"
 // (CLI11's PositiveNumber names the largest double in its message).
 extern const CLI::Validator positive_count;

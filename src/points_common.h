@@ -35,8 +35,6 @@ std::vector<std::string> csv_cells(const std::string& line);
 // Reads the next line of a CSV file that is not blank, as its cells (`csv_cells()`; a UTF-8 byte
 // order mark on the first line left out); `number`: its line number. False at the end.
 bool next_csv_row(std::istream& in, std::size_t& number, std::vector<std::string>& cells);
-// The finite number of a cell; throws Cli_error `where` + why otherwise.
-double finite_number(const std::string& cell, const std::string& where);
 
 // A locations.csv: per row its location and, when the file has those columns, its label (a
 // class name, or `background`) and confidence (NaN when absent).

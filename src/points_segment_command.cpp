@@ -71,20 +71,6 @@ bool next_csv_row(std::istream& in, std::size_t& number, std::vector<std::string
   return false;
 }
 
-double finite_number(const std::string& cell, const std::string& where)
-{
-  double v = 0;
-  std::size_t used = 0;
-  try {
-    v = std::stod(cell, &used);
-  } catch(const std::exception&) {
-    used = 0;
-  }
-  if(cell.empty() || used != cell.size() || !std::isfinite(v))
-    throw Cli_error(where + "'" + cell + "' is not a finite number");
-  return v;
-}
-
 Locations_file read_locations_file(const std::string& path)
 {
   check_input_file(path);
@@ -237,16 +223,9 @@ std::vector<Constraint> read_constraints(const std::string& path)
       throw Cli_error(path + ": line " + std::to_string(number) + ": expected 'foreground,x,y,z' or 'background,x,y,z'");
     c.foreground = field[0].rfind("foreground", 0) == 0;
     for(std::size_t k = 0; k < 3; ++k) {
-      std::size_t used = 0;
-      try {
-        c.point[k] = std::stod(field[k + 1], &used);
-      } catch(const std::exception&) {
-        used = 0;
-      }
-      while(used < field[k + 1].size() && std::isspace(static_cast<unsigned char>(field[k + 1][used])))
-        ++used;
-      if(used == 0 || used != field[k + 1].size() || !std::isfinite(c.point[k]))
-        throw Cli_error(path + ": line " + std::to_string(number) + ": '" + field[k + 1] + "' is not a finite number");
+      std::string cell = field[k + 1];
+      cell.erase(cell.find_last_not_of(" \t") + 1); // (leading blanks are gone already)
+      c.point[k] = finite_number(cell, path + ": line " + std::to_string(number) + ": ");
     }
     result.push_back(c);
   }

@@ -155,18 +155,8 @@ std::vector<std::vector<double>> read_number_lines(const std::string& path, std:
     std::istringstream ss(line);
     std::vector<double> v;
     std::string word;
-    while(ss >> word) {
-      std::size_t used = 0;
-      double x = 0;
-      try {
-        x = std::stod(word, &used);
-      } catch(const std::exception&) {
-        used = 0;
-      }
-      if(used != word.size() || !std::isfinite(x))
-        throw Cli_error(path + ": line " + std::to_string(number) + ": '" + word + "' is not a finite number");
-      v.push_back(x);
-    }
+    while(ss >> word)
+      v.push_back(finite_number(word, path + ": line " + std::to_string(number) + ": "));
     if(v.empty())
       continue;
     if(v.size() != count)

@@ -87,18 +87,17 @@ inline void add_links_and_prior(CGAL::Shape_analysis::internal::Dual_graph& g, c
 constexpr double automatic_crease_weight = 0.9;
 constexpr std::size_t automatic_maximum_segments = 12;
 
-inline std::size_t automatic_number_of_segments(const CGAL::Shape_analysis::internal::Dual_graph& g)
+// `merges`: the whole history of the clustering of `g` down to one segment (or as few as its links
+// allow).
+inline std::size_t automatic_number_of_segments(
+  const CGAL::Shape_analysis::internal::Dual_graph& g,
+  const std::vector<CGAL::Shape_analysis::internal::Normalized_cut_clustering::Merge>& merges)
 {
   namespace SAI = CGAL::Shape_analysis::internal;
   typedef SAI::Normalized_cut_clustering::Id Id;
   const std::size_t n = g.number_of_nodes();
   if(n <= 2)
     return n;
-  SAI::Normalized_cut_clustering clustering(g.node_size, g.edge_source, g.edge_target, g.cut_cost);
-  const double small_size =
-    (std::min)(small_segment_fraction, 0.1 / double(automatic_maximum_segments)) * g.total_size();
-  clustering.run(1, {}, {}, 0.0, 0, small_size);
-  const auto& merges = clustering.merges();
   const std::size_t end_count = n - merges.size(); // (1 unless links leave pieces apart)
   const std::size_t last = (std::min)(merges.size(), automatic_maximum_segments);
   // The clusters before the last `last` merges, densely numbered; the boundaries between them.
@@ -141,14 +140,17 @@ inline std::size_t automatic_number_of_segments(const CGAL::Shape_analysis::inte
   return (std::max)(count, (std::max)(std::size_t(2), end_count));
 }
 
-// segment_dual_graph() once the links and prior boundaries are in `g`.
-inline std::vector<std::size_t> segment_prepared_graph(CGAL::Shape_analysis::internal::Dual_graph& g,
-                                                       const Segmentation_options& o)
+// Segments the dual graph `g` (modified: prior boundaries and links are applied to it); with
+// number_of_segments 0, into the count of automatic_number_of_segments().
+inline std::vector<std::size_t> segment_dual_graph(CGAL::Shape_analysis::internal::Dual_graph& g,
+                                                   const Segmentation_options& o,
+                                                   const std::vector<long long>* prior_labels)
 {
+  add_links_and_prior(g, o, prior_labels);
   namespace SAI = CGAL::Shape_analysis::internal;
   SAI::Normalized_cut_clustering clustering(g.node_size, g.edge_source, g.edge_target, g.cut_cost);
   const std::size_t n = g.number_of_nodes();
-  const std::size_t to_merge = n > o.number_of_segments ? n - o.number_of_segments : 0;
+  const std::size_t to_merge = n > o.number_of_segments ? n - (std::max)(o.number_of_segments, std::size_t(1)) : 0;
   const std::size_t report_every = (std::max<std::size_t>)(1, to_merge / 100);
   std::size_t merged = 0;
   std::function<void(SAI::Normalized_cut_clustering::Id, SAI::Normalized_cut_clustering::Id)> on_merge;
@@ -157,8 +159,20 @@ inline std::vector<std::size_t> segment_prepared_graph(CGAL::Shape_analysis::int
       if(++merged % report_every == 0)
         o.progress_callback(0.9 * double(merged) / double(to_merge));
     };
-  const double small_size = (std::min)(small_segment_fraction, 0.1 / double(o.number_of_segments)) * g.total_size();
-  clustering.run(o.number_of_segments, {}, on_merge, 0.0, 0, small_size);
+  // With number_of_segments 0: merged down to the largest count allowed, then a copy on down to
+  // one segment gives the count, and the merging goes on to it.
+  const bool automatic = o.number_of_segments == 0;
+  const std::size_t first_target = automatic ? automatic_maximum_segments : o.number_of_segments;
+  const auto small_size = [&](std::size_t k) {
+    return (std::min)(small_segment_fraction, 0.1 / double(k)) * g.total_size();
+  };
+  clustering.run(first_target, {}, on_merge, 0.0, 0, small_size(first_target));
+  if(automatic) {
+    SAI::Normalized_cut_clustering rest = clustering;
+    rest.run(1, {}, {}, 0.0, 0, small_size(automatic_maximum_segments));
+    const std::size_t count = automatic_number_of_segments(g, rest.merges());
+    clustering.run(count, {}, on_merge, 0.0, 0, small_size(count));
+  }
   std::vector<std::size_t> labels = clustering.labels();
   if(o.boundary_refinement)
     SAI::multilevel_refinement(g.node_size, g.edge_source, g.edge_target, g.cut_cost,
@@ -166,20 +180,6 @@ inline std::vector<std::size_t> segment_prepared_graph(CGAL::Shape_analysis::int
   if(o.progress_callback)
     o.progress_callback(1.0);
   return number_by_size(labels, g.node_size);
-}
-
-// Segments the dual graph `g` (modified: prior boundaries and links are applied to it).
-inline std::vector<std::size_t> segment_dual_graph(CGAL::Shape_analysis::internal::Dual_graph& g,
-                                                   const Segmentation_options& o,
-                                                   const std::vector<long long>* prior_labels)
-{
-  add_links_and_prior(g, o, prior_labels);
-  if(o.number_of_segments == 0) { // chosen here, then segmented as if given
-    Segmentation_options given = o;
-    given.number_of_segments = automatic_number_of_segments(g);
-    return segment_prepared_graph(g, given);
-  }
-  return segment_prepared_graph(g, o);
 }
 
 } // namespace internal
