@@ -28,7 +28,10 @@
 //
 //   bench_consistent_segmentation [--parts chairs16,chairs100,psb] [--classes Chair,Table,...]
 //       [--psb DIR] [--seed 1] [--coseg-seed 0] [--edge-length 0.042] [--runs 3] [--oversegments 20]
-//       [--adjacency-exponent 0.1] [--points 1000] [--sweep LIST] [--output FILE]
+//       [--adjacency-exponent 0.1] [--points 1000] [--sweep LIST] [--segments auto] [--output FILE]
+//
+// --segments auto: the psb part co-segments with number_of_segments 0 (the count chosen by the
+// function) instead of the class' most frequent human count; (b) keeps the human counts.
 //
 // Times exclude mesh generation and file reading. JSON to stdout (and to FILE, rewritten after
 // every part and PSB class so that a long run can be watched); progress to stderr.
@@ -419,7 +422,7 @@ void usage(const char* name)
             << " [--parts chairs16,chairs100,psb] [--classes Chair,Table,...] [--psb DIR]"
                " [--seed 1] [--coseg-seed 0] [--edge-length 0.042] [--runs 3] [--oversegments 20]"
                " [--adjacency-exponent 0.1] [--points 1000] [--sweep o20,a0.1,p2000,...]"
-               " [--output FILE]\n";
+               " [--segments auto] [--output FILE]\n";
 }
 
 } // namespace
@@ -433,6 +436,7 @@ int main(int argc, char** argv)
   Furniture_settings furniture;
   std::vector<std::pair<std::string, Coseg_parameters>> sweep;
   std::vector<std::string> sweep_items;
+  bool automatic = false;
   for(int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -468,6 +472,13 @@ int main(int argc, char** argv)
         furniture.coseg.points = std::stoul(value());
       else if(arg == "--sweep")
         sweep_items = psb::split(value());
+      else if(arg == "--segments") {
+        if(value() != "auto") {
+          usage(argv[0]);
+          return EXIT_FAILURE;
+        }
+        automatic = true;
+      }
       else if(arg == "--help" || arg == "-h") {
         usage(argv[0]);
         return EXIT_SUCCESS;
@@ -505,6 +516,8 @@ int main(int argc, char** argv)
   report["benchmark"] = "consistent_segmentation";
   report["function"] = "CGAL::Consistent_segmentation::consistent_segmentation";
   report["parameters"] = base.json();
+  report["segments"] = automatic ? "number_of_segments = 0 (chosen by the function)"
+                                 : "number_of_segments = the class' most frequent human count";
   auto publish = [&]() { psb::write_output(output, report); };
 
   try {
@@ -593,7 +606,7 @@ int main(int argc, char** argv)
                 << std::endl;
 
       try {
-        const Consistent_evaluation cons = run_psb_consistent(meshes, entries, k, base);
+        const Consistent_evaluation cons = run_psb_consistent(meshes, entries, automatic ? 0 : k, base);
         const Alone_result same = run_alone(meshes, entries, cons.segments);
         const Alone_result mode = run_alone(meshes, entries, modes);
 

@@ -285,13 +285,16 @@ int run_coseg(const Coseg_command_options& o)
   }
 
   const CS::Consistent_segmentation_options& co = o.coseg;
+  const auto count_text = [](std::size_t k) {
+    return k == 0 ? std::string("an automatic number of") : std::to_string(k);
+  };
   const bool boundary_refinement = co.boundary_refinement && !o.no_refinement;
   if(symmetric)
     progress.stage("segmenting " + std::to_string(num_faces(meshes[0])) +
-                   " faces symmetrically into " + std::to_string(co.number_of_segments) + " segments");
+                   " faces symmetrically into " + count_text(co.number_of_segments) + " segments");
   else
     progress.stage("segmenting " + std::to_string(m) + " meshes consistently into " +
-                   std::to_string(co.number_of_segments) + " segments (" +
+                   count_text(co.number_of_segments) + " segments (" +
                    std::to_string(co.number_of_oversegments) + " over-segments each)");
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
   const auto np = CS::parameters::number_of_segments(co.number_of_segments)
@@ -328,7 +331,7 @@ int run_coseg(const Coseg_command_options& o)
     detected_support = found.front().support_fraction;
     detection_seconds = detecting.seconds();
     progress.stage("segmenting " + std::to_string(num_faces(meshes[0])) + " faces symmetrically into " +
-                   std::to_string(co.number_of_segments) + " segments");
+                   count_text(co.number_of_segments) + " segments");
   }
   if(symmetric) {
     const Kernel::Plane_3 p(plane[0], plane[1], plane[2], plane[3]);
@@ -452,9 +455,11 @@ void add_coseg_command(CLI::App& app, std::function<int()>& run,
     ->required();
   cmd->add_option("--report", options->report,
                   "JSON report (inputs, parameters, seconds, segments per mesh, correspondences)");
-  cmd->add_option("-k,--segments", co.number_of_segments, "Number of segments over the whole set")
-    ->capture_default_str()
-    ->check(positive_count);
+  cmd->add_option("-k,--segments", co.number_of_segments,
+                  "Number of segments over the whole set, or auto: the median over the meshes of the "
+                  "number `segment -k auto` chooses for each (the report's number_of_segments is then 0)")
+    ->default_str(co.number_of_segments == 0 ? std::string("auto") : std::to_string(co.number_of_segments))
+    ->transform(positive_count_or_auto);
   cmd->add_option("--oversegments", co.number_of_oversegments,
                   "Number of segments of each mesh before the joint merging")
     ->capture_default_str()

@@ -225,6 +225,27 @@ TEST(ChairSet, PartsAgreeAcrossTheSetInRandomPoses)
   EXPECT_LT(SAS::furniture_label_accuracy(models, alone), accuracy - 0.1);
 }
 
+TEST(ChairSet, TheAutomaticCountIsTheMedianOfTheMeshesOwn)
+{
+  // number_of_segments 0: each mesh's automatic count (hierarchical_segmentation with 0), the
+  // lower median over the set.
+  const auto models = SAS::procedural_chair_set(6, 11, furniture(true));
+  std::vector<std::size_t> counts;
+  for(const SAS::Furniture_model& model : models) {
+    Mesh m;
+    SAS::fill_polygon_mesh(model.mesh, m);
+    auto map = m.add_property_map<face_descriptor, std::size_t>("f:alone", unset).first;
+    counts.push_back(CS::hierarchical_segmentation(m, map, CS::parameters::number_of_segments(0)));
+  }
+  std::sort(counts.begin(), counts.end());
+  CS::Consistent_segmentation_result r;
+  const auto ids = cosegment(models, CS::parameters::number_of_segments(0).random_seed(5), &r);
+  expect_consistent_result(ids, r);
+  EXPECT_EQ(r.number_of_segments, counts[(counts.size() - 1) / 2]);
+  EXPECT_GE(r.number_of_segments, 2u);
+  EXPECT_GE(SAS::furniture_label_accuracy(models, ids), 0.8);
+}
+
 TEST(ChairSet, ArmrestsGetSegmentsOfTheirOwn)
 {
   const auto models = SAS::procedural_chair_set(10, 11, furniture(true));
@@ -681,7 +702,8 @@ TEST(Parameters, OptionsFromNamedParameters)
   const CS::Consistent_segmentation_options defaults;
   EXPECT_EQ(option_values(CS::consistent_segmentation_options()), option_values(defaults));
   const CS::Hierarchical_segmentation_options stage_one;
-  EXPECT_EQ(defaults.number_of_segments, stage_one.number_of_segments);
+  EXPECT_EQ(defaults.number_of_segments, 0u) << "chosen from the meshes' own counts";
+  EXPECT_NE(stage_one.number_of_segments, 0u);
   EXPECT_EQ(defaults.concavity_exponent, stage_one.concavity_exponent);
 
   const auto given = CS::consistent_segmentation_options(
@@ -765,7 +787,6 @@ TEST(BadInput, ParametersOutOfRange)
   std::vector<Mesh> meshes = to_meshes(models);
   std::vector<Id_map> maps = id_maps(meshes);
   namespace P = CS::parameters;
-  expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::number_of_segments(0)); }, "number_of_segments");
   expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::number_of_oversegments(0)); },
                    "number_of_oversegments");
   expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::adjacency_exponent(1.5)); },
@@ -783,7 +804,7 @@ TEST(BadInput, ParametersOutOfRange)
   auto sym = meshes[0].add_property_map<face_descriptor, std::size_t>("f:sym", unset).first;
   expect_bad_input([&] { CS::symmetric_segmentation(meshes[0], Kernel::Plane_3(0, 0, 0, 1), sym); }, "degenerate");
   expect_bad_input(
-    [&] { CS::symmetric_segmentation(meshes[0], Kernel::Plane_3(1, 0, 0, 0), sym, P::number_of_segments(0)); },
+    [&] { CS::symmetric_segmentation(meshes[0], Kernel::Plane_3(1, 0, 0, 0), sym, P::number_of_segments(1u << 30)); },
     "number_of_segments");
   for(auto f : faces(meshes[0]))
     EXPECT_EQ(sym[f], unset);

@@ -30,7 +30,7 @@ struct Hierarchical_segmentation_options
 {
   /// the number of segments to produce, between 1 and the number of faces; 0 chooses it
   /// automatically, from 2 to 12, by where the merges stop removing concave creases (see
-  /// `hierarchical_segmentation()`; `consistent_segmentation()` does not take 0)
+  /// `hierarchical_segmentation()`)
   std::size_t number_of_segments = 8;
   /// the exponent \f$\alpha\f$ of the concavity weight \f$\min((\theta/\pi)^\alpha, 1)\f$: larger
   /// values make concave creases relatively cheaper to cut (at least 0)
@@ -50,6 +50,28 @@ struct Hierarchical_segmentation_options
   std::function<void(double)> progress_callback;
 };
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// Sets the members of `o` whose named parameters `np` gives (the others keep their values: the
+// defaults of `o`'s own type, which may be an options struct derived from this one).
+template <typename NamedParameters>
+void read_hierarchical_segmentation_options(const NamedParameters& np, Hierarchical_segmentation_options& o)
+{
+  using CGAL::Shape_analysis::internal::parameter_value;
+  namespace snp = CGAL::Shape_analysis::internal_np;
+  o.number_of_segments = parameter_value(np, snp::number_of_segments_tag, o.number_of_segments);
+  o.concavity_exponent = parameter_value(np, snp::concavity_exponent_tag, o.concavity_exponent);
+  o.prior_boundary_factor = parameter_value(np, snp::prior_boundary_factor_tag, o.prior_boundary_factor);
+  o.component_link_distance = parameter_value(np, snp::component_link_distance_tag, o.component_link_distance);
+  o.component_link_factor = parameter_value(np, snp::component_link_factor_tag, o.component_link_factor);
+  o.boundary_refinement = parameter_value(np, snp::boundary_refinement_tag, o.boundary_refinement);
+  o.progress_callback = parameter_value(np, snp::progress_callback_tag, o.progress_callback);
+}
+
+} // namespace internal
+/// \endcond
+
 /*!
 \ingroup PkgConsistentSegmentationRef
 
@@ -66,16 +88,8 @@ template <typename NamedParameters = parameters::Default_named_parameters>
 Hierarchical_segmentation_options
 hierarchical_segmentation_options(const NamedParameters& np = parameters::default_values())
 {
-  using CGAL::Shape_analysis::internal::parameter_value;
-  namespace snp = CGAL::Shape_analysis::internal_np;
   Hierarchical_segmentation_options o;
-  o.number_of_segments = parameter_value(np, snp::number_of_segments_tag, o.number_of_segments);
-  o.concavity_exponent = parameter_value(np, snp::concavity_exponent_tag, o.concavity_exponent);
-  o.prior_boundary_factor = parameter_value(np, snp::prior_boundary_factor_tag, o.prior_boundary_factor);
-  o.component_link_distance = parameter_value(np, snp::component_link_distance_tag, o.component_link_distance);
-  o.component_link_factor = parameter_value(np, snp::component_link_factor_tag, o.component_link_factor);
-  o.boundary_refinement = parameter_value(np, snp::boundary_refinement_tag, o.boundary_refinement);
-  o.progress_callback = parameter_value(np, snp::progress_callback_tag, o.progress_callback);
+  internal::read_hierarchical_segmentation_options(np, o);
   return o;
 }
 

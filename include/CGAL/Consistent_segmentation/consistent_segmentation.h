@@ -225,7 +225,9 @@ results that do not depend on the number of threads.
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{number_of_segments}
-    \cgalParamDescription{the number of segments over the whole set}
+    \cgalParamDescription{the number of segments over the whole set; 0 chooses it: the median,
+      over the meshes, of the number `hierarchical_segmentation()` chooses for each (with its
+      `number_of_segments` 0; of an even number of meshes, the lower of the two middle ones)}
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{`Consistent_segmentation_options::number_of_segments`}
     \cgalParamExtra{more segments are returned when more known labels than that are given (one

@@ -95,6 +95,27 @@ inline std::vector<std::size_t> oversegment(SAI::Dual_graph& g, const Coseg_mesh
   return SAI::number_by_size(clustering.labels(), g.node_size);
 }
 
+// The automatic number of segments of a set (number_of_segments 0): the median, over the meshes,
+// of the number hierarchical_segmentation() chooses for each (of an even number of meshes, the
+// lower of the two middle ones). The meshes' graphs must not be linked yet.
+inline std::size_t automatic_set_count(const std::vector<Coseg_mesh>& meshes, const Coseg_options& o)
+{
+  std::vector<std::size_t> counts(meshes.size(), 1);
+  SAI::Parallel_workspaces<char> workers(o.number_of_threads);
+  workers.for_each(0, meshes.size(), [&](std::size_t i, char&) {
+    SAI::Dual_graph g = meshes[i].graph; // segment_dual_graph links it
+    Segmentation_options so = o;
+    so.number_of_segments = 0;
+    so.progress_callback = {};
+    const std::vector<std::size_t> labels =
+      segment_dual_graph(g, so, meshes[i].prior.empty() ? nullptr : &meshes[i].prior);
+    for(std::size_t l : labels)
+      counts[i] = (std::max)(counts[i], l + 1);
+  });
+  std::sort(counts.begin(), counts.end());
+  return counts[(counts.size() - 1) / 2];
+}
+
 // Stage one, mesh by mesh: the over-segment of every node of every mesh.
 inline std::vector<std::vector<std::size_t>> oversegment_meshes(std::vector<Coseg_mesh>& meshes,
                                                                 const Coseg_options& o)
@@ -265,6 +286,7 @@ inline Coseg_result cosegment(std::vector<Coseg_mesh>& meshes, const Coseg_optio
       throw CGAL::Shape_analysis::Bad_input("symmetric_segmentation: the symmetry plane does not cross the mesh (all of it lies on one side)");
   }
 
+  const std::size_t target = o.number_of_segments == 0 ? automatic_set_count(meshes, o) : o.number_of_segments;
   const std::vector<std::vector<std::size_t>> over = oversegment_meshes(meshes, o);
   report(0.2);
 
@@ -289,7 +311,7 @@ inline Coseg_result cosegment(std::vector<Coseg_mesh>& meshes, const Coseg_optio
   std::vector<double> size;
   result.number_of_correspondences = add_oversegment_graph(merging, meshes, over, offset, links, size);
 
-  merging.run(o.number_of_segments, refinement_interval, o.boundary_refinement,
+  merging.run(target, refinement_interval, o.boundary_refinement,
               [&](double f) { report(0.6 + 0.4 * f); });
 
   number_segments(merging, meshes, over, offset, size, result);
