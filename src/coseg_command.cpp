@@ -315,6 +315,7 @@ int run_coseg(const Coseg_command_options& o)
   Stopwatch segmenting;
   CS::Consistent_segmentation_result r;
   double detection_seconds = 0, detected_support = 1;
+  std::vector<double> face_support; // of the detected plane, per face in the order of faces(): empty, all 1
   if(o.detect_plane) { // the best reflective plane of the mesh
     progress.stage("detecting the symmetry plane");
     Stopwatch detecting;
@@ -329,16 +330,25 @@ int run_coseg(const Coseg_command_options& o)
     const auto& q = found.front().plane;
     plane = {{CGAL::to_double(q.a()), CGAL::to_double(q.b()), CGAL::to_double(q.c()), CGAL::to_double(q.d())}};
     detected_support = found.front().support_fraction;
+    face_support = found.front().support;
     detection_seconds = detecting.seconds();
     progress.stage("segmenting " + std::to_string(num_faces(meshes[0])) + " faces symmetrically into " +
                    count_text(co.number_of_segments) + " segments");
   }
   if(symmetric) {
     const Kernel::Plane_3 p(plane[0], plane[1], plane[2], plane[3]);
+    // The mirror links weighted by the detected plane's support (a partial symmetry).
+    auto support = meshes[0].add_property_map<Mesh::Face_index, double>("f:symmetry_support", 1.0).first;
+    if(!face_support.empty()) {
+      std::size_t k = 0;
+      for(Mesh::Face_index f : faces(meshes[0]))
+        support[f] = face_support[k++];
+    }
+    const auto sp = np.symmetry_support_map(support);
     if(any_prior)
-      r = CS::symmetric_segmentation(meshes[0], p, segment_maps[0], np.prior_segment_map(prior_maps[0]));
+      r = CS::symmetric_segmentation(meshes[0], p, segment_maps[0], sp.prior_segment_map(prior_maps[0]));
     else
-      r = CS::symmetric_segmentation(meshes[0], p, segment_maps[0], np);
+      r = CS::symmetric_segmentation(meshes[0], p, segment_maps[0], sp);
   } else if(any_known && any_prior)
     r = CS::consistent_segmentation(
       meshes, segment_maps, np.known_segment_maps(known_maps).prior_segment_maps(prior_maps));

@@ -615,6 +615,70 @@ TEST(Symmetric, MirrorFacesShareTheirSegment)
   }
 }
 
+TEST(Symmetric, SupportWeighsTheMirrorLinks)
+{
+  const SAS::Labelled_triangle_mesh lm = bent_chair(2);
+  Mesh m;
+  SAS::fill_polygon_mesh(lm, m);
+  const Kernel::Plane_3 plane(1, 0, 0, 0);
+  const auto np = CS::parameters::number_of_segments(5).random_seed(1);
+  auto labels_of = [&](const std::string& name, auto support, CS::Consistent_segmentation_result& r) {
+    auto map = m.add_property_map<face_descriptor, std::size_t>(name, unset).first;
+    r = CS::symmetric_segmentation(m, plane, map, np.symmetry_support_map(support));
+    std::vector<std::size_t> ids;
+    for(auto f : faces(m))
+      ids.push_back(map[f]);
+    return ids;
+  };
+  auto plain_map = m.add_property_map<face_descriptor, std::size_t>("f:plain", unset).first;
+  const CS::Consistent_segmentation_result plain = CS::symmetric_segmentation(m, plane, plain_map, np);
+  std::vector<std::size_t> plain_ids;
+  for(auto f : faces(m))
+    plain_ids.push_back(plain_map[f]);
+
+  // Support 1 everywhere: the whole surface is symmetric, as without the map.
+  auto one = m.add_property_map<face_descriptor, double>("f:one", 1.0).first;
+  CS::Consistent_segmentation_result r_one;
+  EXPECT_EQ(labels_of("f:a", one, r_one), plain_ids);
+  EXPECT_EQ(r_one.number_of_correspondences, plain.number_of_correspondences);
+
+  // Support 0 everywhere: no mirror link is left, the mesh is segmented as alone (one mesh of a set).
+  auto zero = m.add_property_map<face_descriptor, double>("f:zero", 0.0).first;
+  CS::Consistent_segmentation_result r_zero;
+  const std::vector<std::size_t> zero_ids = labels_of("f:b", zero, r_zero);
+  EXPECT_EQ(r_zero.number_of_correspondences, 0u);
+  std::vector<Mesh> alone(1, m);
+  std::vector<Id_map> alone_maps = id_maps(alone);
+  CS::consistent_segmentation(alone, alone_maps, np);
+  std::vector<std::size_t> alone_ids;
+  for(auto f : faces(alone[0]))
+    alone_ids.push_back(alone_maps[0][f]);
+  EXPECT_EQ(zero_ids, alone_ids);
+
+  // Support on the faces above the seat only: only their links are kept.
+  auto upper = m.add_property_map<face_descriptor, double>("f:upper", 0.0).first;
+  const double middle = [&] {
+    double low = 1e300, high = -1e300;
+    for(auto v : vertices(m))
+      low = (std::min)(low, m.point(v).z()), high = (std::max)(high, m.point(v).z());
+    return 0.5 * (low + high);
+  }();
+  for(auto f : faces(m))
+    upper[f] = CGAL::centroid(m.point(source(halfedge(f, m), m)), m.point(target(halfedge(f, m), m)),
+                              m.point(target(next(halfedge(f, m), m), m))).z() > middle ? 1.0 : 0.0;
+  CS::Consistent_segmentation_result r_upper;
+  labels_of("f:c", upper, r_upper);
+  EXPECT_GT(r_upper.number_of_correspondences, 0u);
+  EXPECT_LT(r_upper.number_of_correspondences, plain.number_of_correspondences);
+
+  // A support outside [0, 1] is refused, the output untouched.
+  auto bad = m.add_property_map<face_descriptor, double>("f:bad", 1.5).first;
+  auto untouched = m.add_property_map<face_descriptor, std::size_t>("f:untouched", unset).first;
+  expect_bad_input([&] { CS::symmetric_segmentation(m, plane, untouched, np.symmetry_support_map(bad)); }, "support");
+  for(auto f : faces(m))
+    EXPECT_EQ(untouched[f], unset);
+}
+
 TEST(Symmetric, PlaneInAnyPose)
 {
   // The bent chair moved rigidly, with its plane moved along and given unnormalized: the result

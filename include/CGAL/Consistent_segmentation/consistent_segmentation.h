@@ -447,14 +447,29 @@ canonical pose).
 \param face_segment_map receives the segment id of every face
 \param np the named parameters of `consistent_segmentation()` (but `vertex_point_maps`,
        `known_segment_maps`, `prior_segment_maps` and `number_of_partners`), with
-       `vertex_point_map` and `prior_segment_map` as for `hierarchical_segmentation()`
+       `vertex_point_map` and `prior_segment_map` as for `hierarchical_segmentation()`, and:
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{symmetry_support_map}
+    \cgalParamDescription{per face, in \f$[0, 1]\f$, how much the face takes part in the symmetry,
+      for a partial symmetry (for example the `Symmetry::support` of a plane that
+      `CGAL::Surface_mesh_symmetrization::detect_reflective_symmetries()` found): the mirror link
+      between two sample points counts with the lower support of their faces, and faces of support
+      0 get no mirror link, so that only the symmetric part of the surface is segmented
+      symmetrically}
+    \cgalParamType{a model of `ReadablePropertyMap` with
+      `boost::graph_traits<TriangleMesh>::%face_descriptor` as key and a floating-point type as
+      value}
+    \cgalParamDefault{1 for every face (the whole surface is symmetric)}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
 
 \returns the segments found, as for `consistent_segmentation()` with one mesh (the correspondences
          are the mirror links; no pair of meshes is aligned)
 
 \throws CGAL::Shape_analysis::Bad_input on a mesh or a parameter that `consistent_segmentation()`
-        refuses, or a plane that is degenerate or does not cross the mesh (all of the mesh on one
-        side); `face_segment_map` is then left untouched.
+        refuses, a plane that is degenerate or does not cross the mesh (all of the mesh on one
+        side), or a support outside \f$[0, 1]\f$; `face_segment_map` is then left untouched.
 */
 template <typename TriangleMesh, typename Plane_3, typename FaceSegmentMap,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -487,6 +502,16 @@ Consistent_segmentation_result symmetric_segmentation(const TriangleMesh& tm, co
   auto prior = get_parameter(np, snp::prior_segment_map_tag);
   if constexpr(!std::is_same<decltype(prior), CGAL::internal_np::Param_not_found>::value)
     data[0].prior = internal::read_face_labels(prior, faces_by_node);
+  auto support = get_parameter(np, snp::symmetry_support_map_tag);
+  if constexpr(!std::is_same<decltype(support), CGAL::internal_np::Param_not_found>::value) {
+    data[0].mirror_support.resize(faces_by_node.size());
+    for(std::size_t v = 0; v < faces_by_node.size(); ++v) {
+      const double s = double(get(support, faces_by_node[v]));
+      if(!(s >= 0 && s <= 1))
+        throw Bad_input(who + ": a symmetry support is outside [0, 1]");
+      data[0].mirror_support[v] = s;
+    }
+  }
   // a x + b y + c z + d = 0  <=>  n.x = -d / |(a, b, c)|, in graph units.
   data[0].has_plane = true;
   data[0].plane_normal = SAI::Vector_3d(a, b, c) / length;

@@ -69,6 +69,7 @@ namespace internal_np {
   X(transfer_mode_t, transfer_mode_tag, transfer_mode)                               \
   X(source_side_t, source_side_tag, source_side)                                     \
   X(symmetric_map_t, symmetric_map_tag, symmetric_map)                               \
+  X(symmetry_support_map_t, symmetry_support_map_tag, symmetry_support_map)          \
   X(number_of_faces_t, number_of_faces_tag, number_of_faces)                         \
   X(maximum_error_t, maximum_error_tag, maximum_error)                               \
   X(pairing_tolerance_t, pairing_tolerance_tag, pairing_tolerance)                   \

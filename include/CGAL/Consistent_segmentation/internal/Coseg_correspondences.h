@@ -216,8 +216,22 @@ inline void link_meshes(const std::vector<Coseg_mesh>& meshes, const std::vector
       const SAI::Vector_3d& q = samples[i].normals[k];
       mirrored.normals[k] = q - nn * (2 * SAI::dot(nn, q));
     }
-    link_samples(mirrored, std::uint32_t(i), SAI::Similarity_3d(), samples[i], trees[i],
-                 std::uint32_t(i), o, links[pairs.size() + i]);
+    std::vector<Correspondence>& mirror = links[pairs.size() + i];
+    link_samples(mirrored, std::uint32_t(i), SAI::Similarity_3d(), samples[i], trees[i], std::uint32_t(i), o, mirror);
+    // A partial symmetry: each link counts with the lower support of its two faces; links of
+    // faces outside the symmetry (support 0) are dropped.
+    const std::vector<double>& support = meshes[i].mirror_support;
+    if(!support.empty()) {
+      std::size_t kept = 0;
+      for(const Correspondence& c : mirror) {
+        const double s = (std::min)(support[c.node_a], support[c.node_b]);
+        if(s > 0) {
+          mirror[kept] = c;
+          mirror[kept++].weight *= s;
+        }
+      }
+      mirror.resize(kept);
+    }
   });
 }
 

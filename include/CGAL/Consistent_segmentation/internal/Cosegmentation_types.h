@@ -35,6 +35,7 @@ struct Coseg_mesh
   bool has_plane = false;                               // mirror correspondences within the mesh
   SAI::Vector_3d plane_normal;                          // unit, graph units
   double plane_offset = 0;                              // plane: n.x = offset
+  std::vector<double> mirror_support;                   // empty (all 1), or per node in [0, 1]
 };
 
 typedef Consistent_segmentation_options Coseg_options;
