@@ -4,7 +4,8 @@
 // The partition function on the Princeton Segmentation Benchmark subset in ../shared/data/psb:
 //  - segmentation: Rand Index error of segment_with_partition_function, beside
 //    hierarchical_segmentation and CGAL's SDF segmentation (default parameters) run on the same
-//    meshes in the same process (K = the most frequent human segment count);
+//    meshes in the same process (K = the most frequent human segment count; with --segments auto
+//    the two segmentations choose it, SDF keeps the human count);
 //  - edge prediction: how well the partition function of the whole mesh predicts the edges where
 //    people cut (an edge is positive when some human segmentation separates its two faces), beside
 //    local concavity (the dihedral angle, positive when concave, negative when convex): ROC AUC and
@@ -12,11 +13,13 @@
 //
 //   bench_partition_function_psb [--ids 1,2,21-28] [--classes Human,Cup] [--psb DIR]
 //       [--samples 400] [--method mincut|kmeans|hierarchical] [--part-size 0.05] [--clusters 10]
-//       [--randomness 0.02] [--no-segmentation] [--no-hierarchical] [--no-sdf] [--edge-variants]
-//       [--output FILE]
+//       [--randomness 0.02] [--no-segmentation] [--segments auto] [--no-hierarchical] [--no-sdf]
+//       [--edge-variants] [--output FILE]
 //
-// The partition function whose edge prediction is measured is the one of the chosen sampler
-// (the segmentation's whole-mesh partition function with min-cut sampling). --edge-variants also
+// The partition function whose edge prediction is measured is the one of the chosen sampler, by
+// default the library's (partition_function()'s default); the segmentation always samples min-cuts
+// (its own default), and with --method mincut its whole-mesh values are the ones measured.
+// --edge-variants implies --method mincut. --edge-variants also
 // measures the three samplers, their mean, the mean over three part sizes, values spread by one or
 // two rings of faces, and global values whose ties are ordered by the local concavity.
 // Averages as the benchmark does: per mesh (over its human segmentations), then per class, then
@@ -126,7 +129,7 @@ void usage(const char* name)
   std::cerr << "usage: " << name
             << " [--ids 1,2,21-28] [--classes Human,Cup] [--psb DIR] [--samples 400]"
                " [--method mincut|kmeans|hierarchical] [--part-size 0.05] [--clusters 10] [--randomness 0.02]"
-               " [--no-segmentation]"
+               " [--no-segmentation] [--segments auto]"
                " [--no-hierarchical] [--no-sdf] [--edge-variants] [--output FILE]\n";
 }
 
@@ -141,9 +144,10 @@ int main(int argc, char** argv)
   std::size_t samples = 400;
   double part_size = 0.05, randomness = 0.02;
   std::size_t clusters = 10;
-  RC::Sampling_method method = RC::MIN_CUT;
-  std::string method_name = "mincut";
+  RC::Sampling_method method = RC::Partition_function_options().sampling_method; // the library's
+  std::string method_name = method == RC::MIN_CUT ? "mincut" : method == RC::K_MEANS ? "kmeans" : "hierarchical";
   bool with_segmentation = true, with_hierarchical = true, with_sdf = true, edge_variants = false;
+  bool automatic = false; // --segments auto: both segmentations choose their number of segments
   for(int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -187,19 +191,25 @@ int main(int argc, char** argv)
       }
     } else if(arg == "--no-segmentation")
       with_segmentation = false;
-    else if(arg == "--no-hierarchical")
+    else if(arg == "--segments") {
+      if(value() != "auto") {
+        usage(argv[0]);
+        return EXIT_FAILURE;
+      }
+      automatic = true;
+    } else if(arg == "--no-hierarchical")
       with_hierarchical = false;
     else if(arg == "--no-sdf")
       with_sdf = false;
-    else if(arg == "--edge-variants")
-      edge_variants = true;
-    else {
+    else if(arg == "--edge-variants") {
+      edge_variants = true; // measured beside the min-cut values
+      method = RC::MIN_CUT;
+      method_name = "mincut";
+    } else {
       usage(argv[0]);
       return arg == "--help" ? EXIT_SUCCESS : EXIT_FAILURE;
     }
   }
-  if(method != RC::MIN_CUT)
-    with_segmentation = false; // segment_with_partition_function cuts with min-cut samples
 
   Json report = Json::object();
   report["benchmark"] = "partition_function_psb";
@@ -211,6 +221,8 @@ int main(int argc, char** argv)
   settings["clusters"] = clusters;
   settings["randomness"] = randomness;
   settings["segmentation"] = with_segmentation;
+  settings["segments"] = automatic ? "number_of_segments = 0 (chosen by the function)"
+                                   : "number_of_segments = the most frequent human count";
   settings["hierarchical"] = with_hierarchical;
   settings["sdf"] = with_sdf;
   settings["edge_variants"] = edge_variants;
@@ -302,22 +314,24 @@ int main(int argc, char** argv)
     try {
       const auto start = std::chrono::steady_clock::now();
       const auto np = RC::parameters::number_of_samples(samples)
-                        .sampling_method(method)
                         .part_size(part_size)
                         .number_of_clusters(clusters)
                         .randomness(randomness);
-      if(with_segmentation) {
+      if(with_segmentation) { // min-cut samples (the segmentation's own default)
         auto segment = mesh.add_property_map<Face, std::size_t>("f:pf", 0).first;
-        RC::segment_with_partition_function(mesh, segment,
-                                            np.number_of_segments(k).edge_value_map(value_map));
+        const std::size_t got = RC::segment_with_partition_function(
+          mesh, segment, np.sampling_method(RC::MIN_CUT).number_of_segments(automatic ? 0 : k).edge_value_map(value_map));
+        j["pf_segments"] = got;
         timed("pf_segmentation", seconds_since(start));
         const double e = psb::mean_rand_index_error(entry, labels_of(mesh, segment));
         record("pf_segmentation_rand_index_error", e);
         std::cerr << " | pf-seg " << e;
         mesh.remove_property_map(segment);
-      } else {
-        RC::partition_function(mesh, value_map, np);
-        timed("partition_function", seconds_since(start));
+      }
+      if(!with_segmentation || method != RC::MIN_CUT) { // else: the segmentation's whole-mesh values
+        const auto pf_start = std::chrono::steady_clock::now();
+        RC::partition_function(mesh, value_map, np.sampling_method(method));
+        timed("partition_function", seconds_since(pf_start));
       }
     } catch(const std::exception& ex) {
       j["pf_error"] = ex.what();
@@ -404,7 +418,8 @@ int main(int argc, char** argv)
     if(with_hierarchical) {
       auto segment = mesh.add_property_map<Face, std::size_t>("f:hier", 0).first;
       const auto start = std::chrono::steady_clock::now();
-      CS::hierarchical_segmentation(mesh, segment, CS::parameters::number_of_segments(k));
+      j["hierarchical_segments"] =
+        CS::hierarchical_segmentation(mesh, segment, CS::parameters::number_of_segments(automatic ? 0 : k));
       timed("hierarchical", seconds_since(start));
       const double e = psb::mean_rand_index_error(entry, labels_of(mesh, segment));
       record("hierarchical_rand_index_error", e);

@@ -79,7 +79,8 @@ void add_sampling_options(CLI::App* cmd, RC::Partition_function_options& so, Com
           return std::string();
         },
         "{mincut,kmeans,hierarchical}"))
-      ->default_str(method_name(so.sampling_method));
+      ->default_str(method_name(so.sampling_method) +
+                    (so.sampling_method == RC::MIN_CUT ? "" : "; mincut with --cuts, --scales or --part-size"));
   cmd->add_option("-n,--samples", so.number_of_samples, "Number of sampled segmentations")
     ->capture_default_str()
     ->check(positive_count);
@@ -407,7 +408,9 @@ int run_partition_segment(const Partition_segment_options& o)
   const RC::Segment_with_partition_function_options& so = o.segmentation;
   const bool refinement = so.boundary_refinement && !o.no_refinement;
   progress.stage("segmenting " + std::to_string(num_faces(mesh)) + " faces into " +
-                 std::to_string(so.number_of_segments) + " segments with the partition function");
+                 (so.number_of_segments == 0 ? std::string("an automatic number of")
+                                             : std::to_string(so.number_of_segments)) +
+                 " segments with the partition function");
   auto segment_map = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:segment", 0).first;
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
   Stopwatch segmenting;
@@ -475,6 +478,11 @@ void add_partition_commands(CLI::App& app, std::function<int()>& run)
       ->delimiter(',');
     add_sampling_options(cmd, o->sampling, *o, true);
     cmd->callback([o, cmd, &run]() {
+      // Without --method, what needs single cuts (the list of cuts, part sizes) samples min-cuts,
+      // as the library's most_consistent_cuts() and multiscale_partition_function() do.
+      if(cmd->count("--method") == 0 &&
+         (!o->cuts.empty() || !o->scales.empty() || cmd->count("--part-size") > 0))
+        o->sampling.sampling_method = RC::MIN_CUT;
       if(o->cuts.empty() && cmd->count("--max-cuts") > 0)
         throw CLI::ValidationError("--max-cuts", "needs --cuts");
       if(!o->scales.empty() && !o->cuts.empty())
@@ -492,9 +500,12 @@ void add_partition_commands(CLI::App& app, std::function<int()>& run)
       "partition-segment",
       "Segment a triangle mesh along its most consistent cuts (partition function, min-cut sampling).");
     cmd->add_option("input", o->input, "Input triangle mesh (.off, .ply, .obj, .stl)")->required();
-    cmd->add_option("-k,--segments", o->segmentation.number_of_segments, "Number of segments")
-      ->capture_default_str()
-      ->check(positive_count);
+    cmd->add_option("-k,--segments", o->segmentation.number_of_segments,
+                    "Number of segments, or auto: the splits go on while the next cut follows concave creases, "
+                    "4 to 12 segments (the report's number_of_segments is then 0, its segments the number chosen)")
+      ->default_str(o->segmentation.number_of_segments == 0 ? std::string("auto")
+                                                          : std::to_string(o->segmentation.number_of_segments))
+      ->transform(positive_count_or_auto);
     cmd->add_option("-o,--output", o->output_ply,
                     "Coloured mesh (.ply, one colour and an integer 'segment' per face)");
     cmd->add_option("--seg", o->output_seg,

@@ -248,7 +248,8 @@ int run_deform(const Deform_options& o)
   if(computed) {
     progress.stage("sampling the partition function (" + std::to_string(so.number_of_samples) + " segmentations)");
     RC::partition_function(mesh, CGAL::make_property_map(values),
-                           RC::parameters::number_of_samples(so.number_of_samples)
+                           RC::parameters::sampling_method(RC::MIN_CUT) // the joints, not every boundary
+                             .number_of_samples(so.number_of_samples)
                              .random_seed(so.random_seed)
                              .number_of_threads(so.number_of_threads)
                              .progress_callback(on_progress));

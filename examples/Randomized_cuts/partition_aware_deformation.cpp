@@ -41,11 +41,13 @@ int main(int argc, char** argv)
   }
 
   try {
-    // 1. The partition function: how often random segmentations cut each edge.
+    // 1. The partition function: how often random segmentations cut each edge. Min-cut samples
+    //    mark the few strong boundaries (the joints) a deformation should bend at.
     Mesh::Property_map<edge_descriptor, double> values =
       mesh.add_property_map<edge_descriptor, double>("e:partition_function", 0.0).first;
     const RC::Partition_function_result pf =
-      RC::partition_function(mesh, values, RC::parameters::number_of_samples(200).random_seed(1));
+      RC::partition_function(mesh, values,
+                             RC::parameters::sampling_method(RC::MIN_CUT).number_of_samples(200).random_seed(1));
     double largest = 0;
     for(edge_descriptor e : edges(mesh))
       largest = (std::max)(largest, values[e]);

@@ -122,7 +122,8 @@ struct Scene
   {
     SAS::fill_polygon_mesh(soup, mesh);
     values = mesh.add_property_map<edge_descriptor, double>("e:partition", 0.0).first;
-    RC::partition_function(mesh, values, RC::parameters::number_of_samples(samples).random_seed(3));
+    RC::partition_function(mesh, values,
+                           RC::parameters::sampling_method(RC::MIN_CUT).number_of_samples(samples).random_seed(3));
     for(edge_descriptor e : edges(mesh))
       largest_value = (std::max)(largest_value, values[e]);
     label.assign(num_vertices(mesh), -1);

@@ -167,7 +167,7 @@ TEST(PartitionFunction, MinCutValuesPeakAtEveryNeck)
   // 2 p (1 - p) of them for parts of area shares p and 1 - p).
   const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(SAS::three_sphere_chain(), 0.2);
   const Mesh m = to_mesh(lm);
-  const std::vector<double> v = values_of(m, RC::parameters::random_seed(3));
+  const std::vector<double> v = values_of(m, RC::parameters::random_seed(3).sampling_method(RC::MIN_CUT));
   const Neck_figures x = neck_figures(m, lm.labels, v);
   ASSERT_EQ(x.neck_max.size(), 2u);
   // Cuts at a neck spread over the two or three nearly equally cheap edge loops of its crease.
@@ -346,7 +346,7 @@ TEST(PartitionFunction, CutsReportTheirEdgesLengthAndSides)
   const auto cuts = RC::most_consistent_cuts(
     m, RC::parameters::number_of_samples(200).edge_value_map(CGAL::make_property_map(v)));
   ASSERT_GE(cuts.size(), 2u);
-  EXPECT_EQ(v, values_of(m, RC::parameters::number_of_samples(200)))
+  EXPECT_EQ(v, values_of(m, RC::parameters::number_of_samples(200).sampling_method(RC::MIN_CUT)))
     << "the edge values are those of partition_function with the same parameters";
   for(const auto& c : cuts) {
     // The cut edges are exactly the edges between the smaller side and the rest.
@@ -383,7 +383,7 @@ TEST(PartitionFunction, MultiscaleValuesAreThoseOfEachPartSize)
   // where rounding decides between two cuts of the same cost.
   for(std::size_t k = 0; k < sizes.size(); ++k) {
     const std::vector<double> single =
-      values_of(m, RC::parameters::part_size(sizes[k]).number_of_samples(150).random_seed(5));
+      values_of(m, RC::parameters::part_size(sizes[k]).number_of_samples(150).random_seed(5).sampling_method(RC::MIN_CUT));
     std::size_t differ = 0;
     for(edge_descriptor e : edges(m)) {
       ASSERT_EQ(multi[e].size(), sizes.size());
@@ -464,7 +464,8 @@ TEST(PartitionFunction, SeparatePiecesAreCutApartAndPolyhedronWorks)
   SAS::fill_polygon_mesh(lm, p);
   std::map<Polyhedron::Halfedge_handle, double> by_halfedge;
   std::map<boost::graph_traits<Polyhedron>::edge_descriptor, double> values;
-  RC::partition_function(p, boost::make_assoc_property_map(values), RC::parameters::number_of_samples(100));
+  RC::partition_function(p, boost::make_assoc_property_map(values),
+                         RC::parameters::number_of_samples(100).sampling_method(RC::MIN_CUT));
   ASSERT_EQ(values.size(), num_edges(p));
   // No mesh edge lies between the boxes: every value stays small (cuts go between the pieces).
   double largest = 0;
@@ -580,6 +581,46 @@ TEST(Segmentation, RecoversTheKnownParts)
   }
 }
 
+TEST(Segmentation, TheAutomaticCountCutsEveryCreaseBetweenParts)
+{
+  // Parts joined along concave creases: the splits follow creases, so the segmentation goes on at
+  // least until every part is apart (it may split a part further along the shallow concave bands
+  // where the procedural parts blend), and no segment straddles two parts.
+  const std::vector<std::pair<const char*, SAS::Procedural_shape>> cases = {
+    {"three spheres", SAS::three_sphere_chain(2)},
+    {"body with head", SAS::body_with_limbs(3, true)},
+    {"star", SAS::star(5, 4)}};
+  for(const auto& c : cases) {
+    SCOPED_TRACE(c.first);
+    const SAS::Labelled_triangle_mesh lm = SAS::mesh_procedural_shape(c.second, 0.16);
+    Mesh m = to_mesh(lm);
+    auto seg = m.add_property_map<face_descriptor, std::size_t>("f:s", 99).first;
+    const std::size_t k = RC::segment_with_partition_function(
+      m, seg, RC::parameters::number_of_segments(0).number_of_samples(200));
+    EXPECT_GE(k, lm.number_of_labels);
+    EXPECT_LE(k, 12u);
+    // Per segment, the area of each part in it: most of it in one part.
+    const std::vector<double> areas = lm.areas();
+    std::vector<std::map<std::size_t, double>> area_by_part(k);
+    std::vector<double> segment_area(k, 0.0);
+    for(face_descriptor f : faces(m)) {
+      ASSERT_LT(seg[f], k);
+      area_by_part[seg[f]][lm.labels[f]] += areas[f];
+      segment_area[seg[f]] += areas[f];
+    }
+    double inside = 0, total = 0;
+    for(std::size_t s = 0; s < k; ++s) {
+      double largest = 0;
+      for(const auto& kv : area_by_part[s])
+        largest = (std::max)(largest, kv.second);
+      EXPECT_GT(segment_area[s], 0.0) << "segment " << s << " is empty";
+      inside += largest;
+      total += segment_area[s];
+    }
+    EXPECT_GE(inside / total, 0.95) << "the segments refine the parts";
+  }
+}
+
 TEST(Segmentation, RealMeshGetsTheRequestedSegmentsAndEdgeValues)
 {
   Mesh m;
@@ -595,8 +636,8 @@ TEST(Segmentation, RealMeshGetsTheRequestedSegmentsAndEdgeValues)
   for(face_descriptor f : faces(m))
     used.insert(seg[f]);
   EXPECT_EQ(used.size(), 6u);
-  EXPECT_EQ(v, values_of(m, RC::parameters::number_of_samples(100)))
-    << "the whole mesh's partition function, as partition_function() gives it";
+  EXPECT_EQ(v, values_of(m, RC::parameters::number_of_samples(100).sampling_method(RC::MIN_CUT)))
+    << "the whole mesh's partition function, as partition_function() gives it with min-cuts";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -623,16 +664,22 @@ void expect_same_sampling(const RC::Partition_function_options& a, const RC::Par
 TEST(Options, WithoutNamedParametersTheyAreTheDefaults)
 {
   expect_same_sampling(RC::partition_function_options(), RC::Partition_function_options());
+  // The partition function alone samples hierarchical clusterings (the best boundary signal); the
+  // functions that need each sample to be one cut, and the registration, sample min-cuts.
+  EXPECT_EQ(RC::Partition_function_options().sampling_method, RC::HIERARCHICAL);
+  RC::Partition_function_options min_cut;
+  min_cut.sampling_method = RC::MIN_CUT;
   const RC::Multiscale_partition_function_options multiscale = RC::multiscale_partition_function_options();
-  expect_same_sampling(multiscale, RC::Partition_function_options());
+  expect_same_sampling(multiscale, min_cut);
   EXPECT_EQ(multiscale.part_sizes, RC::Multiscale_partition_function_options().part_sizes);
   const RC::Most_consistent_cuts_options cuts = RC::most_consistent_cuts_options();
-  expect_same_sampling(cuts, RC::Partition_function_options());
+  expect_same_sampling(cuts, min_cut);
   EXPECT_EQ(cuts.number_of_cuts, RC::Most_consistent_cuts_options().number_of_cuts);
   EXPECT_EQ(cuts.duplicate_tolerance, RC::Most_consistent_cuts_options().duplicate_tolerance);
   const RC::Segment_with_partition_function_options seg = RC::segment_with_partition_function_options();
-  expect_same_sampling(seg, RC::Partition_function_options());
+  expect_same_sampling(seg, min_cut);
   EXPECT_EQ(seg.number_of_segments, RC::Segment_with_partition_function_options().number_of_segments);
+  EXPECT_EQ(seg.number_of_segments, 0u) << "chosen by default";
   EXPECT_EQ(seg.boundary_refinement, RC::Segment_with_partition_function_options().boundary_refinement);
   // The dual graph's defaults are the Core's, shared with the other packages.
   EXPECT_EQ(RC::Partition_function_options().concavity_exponent,
@@ -735,8 +782,6 @@ TEST(BadInput, MeshesAndParametersAreRefused)
                CGAL::Shape_analysis::Bad_input);
 
   auto seg = m.add_property_map<face_descriptor, std::size_t>("f:s", 5).first;
-  EXPECT_THROW(RC::segment_with_partition_function(m, seg, RC::parameters::number_of_segments(0)),
-               CGAL::Shape_analysis::Bad_input);
   EXPECT_THROW(RC::segment_with_partition_function(m, seg, RC::parameters::number_of_segments(num_faces(m) + 1)),
                CGAL::Shape_analysis::Bad_input);
   EXPECT_THROW(RC::segment_with_partition_function(m, seg, RC::parameters::sampling_method(RC::K_MEANS)),

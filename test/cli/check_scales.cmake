@@ -2,7 +2,8 @@ cmake_minimum_required(VERSION 3.19)
 # `shape_analysis partition --scales 0.02,0.1` on CGAL's elephant: one line per edge with a value
 # per part size, each in [0, 1]; the report's scales give each part size's largest value, the
 # largest of which is the report's largest_value; the column of 0.1 agrees on most edges with
-# `partition --part-size 0.1` (same seed and samples: the same cuts but where rounding decides).
+# `partition --part-size 0.1` (same seed and samples: the same cuts but where rounding decides);
+# both sample min-cuts, a plain `partition` hierarchical clusterings (the default).
 #   cmake -DEXE=<tool> -DMESH=<elephant.off> -DWORK=<dir> -P check_scales.cmake
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
@@ -45,4 +46,12 @@ string(JSON l0 GET "${report}" scales 0 largest_value)
 string(JSON l1 GET "${report}" scales 1 largest_value)
 if(NOT scales EQUAL 2 OR (NOT largest EQUAL l0 AND NOT largest EQUAL l1))
   message(FATAL_ERROR "report: ${scales} scales, largest ${largest} (per scale ${l0}, ${l1})")
+endif()
+# The sampler: the library's default (hierarchical) unless something needs single cuts.
+string(JSON method GET "${report}" parameters sampling_method)
+run_tool(partition "${MESH}" -q -n 10 --report "${WORK}/default.json")
+file(READ "${WORK}/default.json" default_report)
+string(JSON default_method GET "${default_report}" parameters sampling_method)
+if(NOT method STREQUAL "mincut" OR NOT default_method STREQUAL "hierarchical")
+  message(FATAL_ERROR "sampler ${method} with --scales, ${default_method} without options")
 endif()

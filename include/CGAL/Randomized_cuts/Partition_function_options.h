@@ -32,8 +32,12 @@ is where the defaults are written; the manual, `partition_function_options()` an
 */
 struct Partition_function_options
 {
-  /// how segmentations are sampled
-  Sampling_method sampling_method = MIN_CUT;
+  /// how segmentations are sampled: `HIERARCHICAL`, whose values say best where people draw part
+  /// boundaries (see the manual's section on boundary prediction); the functions that need each
+  /// sample to be one cut (`segment_with_partition_function()`, `most_consistent_cuts()`,
+  /// `multiscale_partition_function()`) and `register_meshes()` default to `MIN_CUT` in their own
+  /// options structs
+  Sampling_method sampling_method = HIERARCHICAL;
   /// the number of segmentations to sample (at least 1)
   std::size_t number_of_samples = 400;
   /// stop early, after a batch of samples, when no edge value changed by more than this over the

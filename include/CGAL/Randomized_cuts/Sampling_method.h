@@ -18,8 +18,8 @@ The ways `partition_function()` draws random segmentations of a mesh (named para
 enum Sampling_method : int
 {
   /// A minimum cut between two random faces, with cuts near either face made expensive so that
-  /// both sides are parts of a reasonable size (the default). Each sample is one cut into two
-  /// sides.
+  /// both sides are parts of a reasonable size. Each sample is one cut into two sides (the default
+  /// of the functions that need cuts).
   MIN_CUT = 0,
   /// K-means clustering from random seed faces under traversal distances; each seed moves to the
   /// face of its segment furthest from the segment's boundary until the seeds stop moving (at most
@@ -28,7 +28,7 @@ enum Sampling_method : int
   /// Randomized hierarchical clustering under the area-normalized cut: each merge is drawn at
   /// random, better merges being much more likely (with probability about proportional to the
   /// gain raised to 1/`randomness`). Each run contributes its segmentations into 2, 3, ...,
-  /// `number_of_clusters` segments.
+  /// `number_of_clusters` segments (the default of `partition_function()`).
   HIERARCHICAL = 2
 };
 

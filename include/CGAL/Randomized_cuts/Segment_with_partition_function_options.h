@@ -23,8 +23,14 @@ takes its defaults from here.
 */
 struct Segment_with_partition_function_options : Partition_function_options
 {
-  /// the number of segments to produce, between 1 and the number of faces
-  std::size_t number_of_segments = 8;
+  /// The defaults of `Partition_function_options`, except `sampling_method`: `MIN_CUT`, the only
+  /// sampler whose samples are cuts.
+  Segment_with_partition_function_options() { sampling_method = MIN_CUT; }
+
+  /// the number of segments to produce, at most the number of faces; 0, the default, chooses it
+  /// (see `segment_with_partition_function()`; on the Princeton Segmentation Benchmark's
+  /// development subset, within 0.02 of the Rand Index error that the human counts give)
+  std::size_t number_of_segments = 0;
   /// whether single faces are moved between segments at the end while the normalized cut
   /// decreases
   bool boundary_refinement = true;

@@ -67,6 +67,11 @@ of the same name, initialized to its default.
 */
 struct Most_consistent_cuts_options : Partition_function_options
 {
+  /// The defaults of `Partition_function_options`, except `sampling_method`: `MIN_CUT`, whose
+  /// samples are single cuts (the thesis' most consistent cuts); the other samplers' segmentations
+  /// are listed as their sets of cut edges.
+  Most_consistent_cuts_options() { sampling_method = MIN_CUT; }
+
   /// the largest number of cuts returned (the largest `std::size_t`: all distinct cuts)
   std::size_t number_of_cuts = (std::numeric_limits<std::size_t>::max)();
   /// `MIN_CUT` sampling: two cuts whose smaller sides differ by at most this fraction of the

@@ -126,7 +126,9 @@ partition_aware_deformation_options(const NamedParameters& np = CGAL::Shape_anal
 
 A weight calculator for `CGAL::Surface_mesh_deformation` (its `WC` template argument) that makes a
 triangle mesh stiff inside its parts and flexible at their boundaries, following a partition
-function (see `partition_function()`): the weight of a halfedge \f$h\f$ of the edge \f$e\f$ is
+function (see `partition_function()`; sampled with `MIN_CUT`, whose few strong boundaries are the
+joints a deformation should bend at, where the default sampler also grades weaker boundaries
+inside parts): the weight of a halfedge \f$h\f$ of the edge \f$e\f$ is
 \f[
   w(h) = c(e)\, s(e), \qquad
   c(e) = \max\left(\frac{1}{2} (\cot^+\alpha + \cot^+\beta),\ 10^{-6}\right), \qquad
@@ -156,7 +158,8 @@ the plain (positive) cotangent weights.
 
 Both halfedges of an edge get the same weight, on the scale of `CGAL::Weights::Cotangent_weight`
 (the weight that the `ORIGINAL_ARAP` and `SRE_ARAP` algorithms use by default, with which this
-class is meant to be used). For example, with `values` filled by `partition_function()`:
+class is meant to be used). For example, with `values` filled by `partition_function()` with
+`sampling_method(MIN_CUT)`:
 \code
 typedef CGAL::Randomized_cuts::Partition_aware_cotangent_weight<Mesh, Edge_value_map> Weight;
 typedef CGAL::Surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, CGAL::ORIGINAL_ARAP,

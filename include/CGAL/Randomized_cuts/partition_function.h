@@ -96,7 +96,7 @@ the edge between two faces costs its length times \f$\min((\theta/\pi)^\alpha, 1
 crossing it costs the distance of the face centroids divided by the same weight (\f$\theta\f$ is
 the dihedral angle measured outside the surface): cheap to cut and long to cross at concave
 creases. Three samplers are available (`sampling_method`):
-- `MIN_CUT` (default): a random source face and a random sink face (drawn by area); the cut cost
+- `MIN_CUT`: a random source face and a random sink face (drawn by area); the cut cost
   of every edge is multiplied by a penalty of its relative distance
   \f$d = \min(d_A, d_B)/(d_A + d_B)\f$ from the two faces (traversal-cost geodesics): \f$W = 400s+1\f$
   for \f$d \le s\f$, falling linearly to 1 at \f$d = 3s\f$ and 1 beyond, so that neither side is
@@ -107,7 +107,9 @@ creases. Three samplers are available (`sampling_method`):
 - `HIERARCHICAL`: area-normalized-cut merging where each merge is drawn at random among the
   candidates, with probability about proportional to \f$|\Delta J|^{1/r}\f$ (the candidates' gains
   mapped to their share of the best one, raised to \f$1/r\f$); each run contributes its
-  segmentations into 2, ..., `number_of_clusters` segments.
+  segmentations into 2, ..., `number_of_clusters` segments. The default: its values rank the edges
+  where people draw part boundaries better than local concavity does, by ROC area and by the
+  precision of the top 2% (the other two samplers do not; see the manual).
 
 Faces of different connected components are joined by weak links (as in
 `CGAL::Consistent_segmentation::hierarchical_segmentation()`), so that a model made of pieces is
@@ -248,6 +250,10 @@ initialized to its default.
 */
 struct Multiscale_partition_function_options : Partition_function_options
 {
+  /// The defaults of `Partition_function_options`, except `sampling_method`: `MIN_CUT`, the only
+  /// sampler with a part size.
+  Multiscale_partition_function_options() { sampling_method = MIN_CUT; }
+
   /// the part sizes \f$s\f$, each in \f$(0, 1/6]\f$ (at least one)
   std::vector<double> part_sizes = {0.02, 0.05, 0.1};
 };

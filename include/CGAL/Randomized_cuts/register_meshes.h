@@ -91,8 +91,13 @@ defaults from here.
 struct Register_meshes_options : Partition_function_options
 {
   /// The defaults of `Partition_function_options`, except `number_of_samples`: the registration
-  /// only needs to know roughly where the part boundaries are, and samples fewer segmentations.
-  Register_meshes_options() { number_of_samples = 100; }
+  /// only needs to know roughly where the part boundaries are, and samples fewer segmentations;
+  /// and `sampling_method`: `MIN_CUT`, whose few strong boundaries weigh the sample points.
+  Register_meshes_options()
+  {
+    number_of_samples = 100;
+    sampling_method = MIN_CUT;
+  }
 
   /// the number of points sampled on each mesh (at least 10)
   std::size_t number_of_points = 2000;

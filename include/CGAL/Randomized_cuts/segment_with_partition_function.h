@@ -28,6 +28,13 @@ proposed as its split; the proposal with the lowest area-normalized cut
 `number_of_segments` segments. The boundaries are finally refined: single faces move to a
 neighbouring segment while \f$\sum_S \mathrm{cut}(S)/\mathrm{area}(S)\f$ decreases.
 
+With `number_of_segments` 0 the number is chosen: the splits go on in the same order while the cut
+to apply next follows concave creases, that is while its mean concavity weight (its cut cost over
+its length, 1 across flat or convex surface) stays below 0.8; the first cut that does not stops
+the segmentation once there are 4 segments, and there are at most 12 (fewer when the mesh has
+fewer faces). The manual gives the errors of this choice against the human segmentations' own
+counts on the Princeton Segmentation Benchmark.
+
 Segment ids are `0 .. n-1`, numbered by decreasing area. The result is the same for any number of
 threads.
 
@@ -43,10 +50,10 @@ threads.
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{number_of_segments}
-    \cgalParamDescription{the number of segments to produce}
+    \cgalParamDescription{the number of segments to produce, or 0 to choose it (see above)}
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{`Segment_with_partition_function_options::number_of_segments`}
-    \cgalParamExtra{must be between 1 and the number of faces}
+    \cgalParamExtra{must be at most the number of faces}
   \cgalParamNEnd
   \cgalParamNBegin{boundary_refinement}
     \cgalParamDescription{whether single faces are moved between segments at the end while the
@@ -63,7 +70,7 @@ threads.
 \cgalNamedParamsEnd
 
 \returns the number of segments written to `face_segment_map` (fewer than `number_of_segments`
-         only if the mesh has fewer faces)
+         only if the mesh has fewer faces; with `number_of_segments` 0, the number chosen)
 
 \throws CGAL::Shape_analysis::Bad_input as `partition_function()`, if `number_of_segments` is out
         of range, or if the `sampling_method` is not `MIN_CUT`.
@@ -77,9 +84,7 @@ std::size_t segment_with_partition_function(const TriangleMesh& tm, FaceSegmentM
   namespace snp = CGAL::Shape_analysis::internal_np;
   const std::string who = "segment_with_partition_function";
   const Segment_with_partition_function_options o = segment_with_partition_function_options(np);
-  const std::size_t k = o.number_of_segments;
-  if(k == 0)
-    throw Bad_input(who + ": number_of_segments must be at least 1");
+  const std::size_t k = o.number_of_segments; // 0: chosen
   internal::Mesh_sampling<TriangleMesh, NamedParameters> sampling(tm, np, internal::sampling_options(o, np), who);
   const auto& g = sampling.graph();
   if(k > g.number_of_nodes())

@@ -10,7 +10,7 @@
 //     it induces), and its most consistent cut is proposed as its split, with the area-normalized
 //     cut cut(A, B) (1 / size(A) + 1 / size(B)) of that split as priority;
 //  3. the proposal of lowest normalized cut is applied; repeat from 2 until the requested number
-//     of segments.
+//     of segments. With number_of_segments 0 the number is chosen (see automatic_crease_weight).
 // Optionally the boundaries are then refined by moving single faces between segments while the
 // area-normalized cut J = sum cut(S) / size(S) decreases.
 
@@ -38,6 +38,16 @@ namespace internal {
 // options given beside it, which hold the part size actually used.
 typedef Segment_with_partition_function_options Partition_segmentation_options;
 
+// The automatic number of segments (number_of_segments 0): the splits go on, in their usual order,
+// while the cut to apply next runs along concave creases: its mean concavity weight (cut cost over
+// cut length) below automatic_crease_weight, 1 where it crosses flat or convex surface. The first
+// split whose cut does not, once there are automatic_minimum_segments segments, stops the
+// segmentation; at most automatic_maximum_segments segments. Measured on the 152 meshes of the
+// Princeton Segmentation Benchmark's development subset (see the manual).
+constexpr double automatic_crease_weight = 0.8;
+constexpr std::size_t automatic_minimum_segments = 4;
+constexpr std::size_t automatic_maximum_segments = 12;
+
 class Partition_segmentation
 {
 public:
@@ -51,7 +61,8 @@ public:
   std::vector<std::size_t> run(std::vector<double>* whole_values = nullptr)
   {
     const std::size_t n = m_g.number_of_nodes();
-    const std::size_t k = (std::min)(m_o.number_of_segments, n);
+    const bool automatic = m_o.number_of_segments == 0;
+    const std::size_t k = (std::min)(automatic ? automatic_maximum_segments : m_o.number_of_segments, n);
     std::vector<std::size_t> label(n, 0);
     if(k <= 1 && whole_values == nullptr)
       return label; // one segment: nothing to sample
@@ -71,6 +82,9 @@ public:
           best = s;
       if(best == proposals.size())
         break; // nothing left to split
+      if(automatic && segments >= automatic_minimum_segments &&
+         proposals[best].weight >= automatic_crease_weight)
+        break; // the next cut would cross the surface rather than follow a crease
       const std::size_t new_label = segments++;
       for(std::uint32_t v : proposals[best].part)
         label[v] = new_label;
@@ -101,6 +115,7 @@ private:
   {
     bool valid = false;
     double priority = 0;
+    double weight = 0; // mean concavity weight of the cut (0 when it cuts component links only)
     std::vector<std::uint32_t> part; // the nodes that would form the new segment
   };
 
@@ -151,12 +166,18 @@ private:
     const std::size_t best = most_consistent_sample(sub, r.samples, r.values[0], 0);
     std::vector<char> side;
     two_sides(sub, r.samples[best], 0, side);
-    double size[2] = {0, 0}, cut = 0;
+    double size[2] = {0, 0}, cut = 0, length = 0, crease_cut = 0;
     for(std::size_t i = 0; i < nodes.size(); ++i)
       size[int(side[i])] += sub.node_size[i];
     for(std::size_t e = 0; e < sub.number_of_edges(); ++e)
-      if(side[sub.edge_source[e]] != side[sub.edge_target[e]])
+      if(side[sub.edge_source[e]] != side[sub.edge_target[e]]) {
         cut += sub.cut_cost[e];
+        if(sub.edge_length[e] > 0) { // a mesh edge, not a component link
+          length += sub.edge_length[e];
+          crease_cut += sub.cut_cost[e];
+        }
+      }
+    p.weight = length > 0 ? crease_cut / length : 0;
     // The smaller side becomes the new segment. A side of zero area (degenerate faces only) gets
     // a tiny size: its split is proposed, but after every other.
     const char moving = size[1] <= size[0] ? 1 : 0;
