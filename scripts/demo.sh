@@ -30,8 +30,8 @@ segment armadillo 12
 segment bear 8
 segment blobby_3cc 3
 
-# The partition function (Randomized_cuts): how often random cuts cross each edge, coloured from
-# light grey to dark red, and a segmentation along the most consistent cuts.
+# The partition function (Randomized_cuts): how often random segmentations cut each edge,
+# coloured from light grey to dark red, and a segmentation along the most consistent cuts.
 "$tool" partition "$data/camel.off" --samples 400 --output "$out/camel_partition.ply" \
   --edge-values "$out/camel_partition.txt" --report "$out/camel_partition.json" --verbose
 "$tool" partition-segment "$data/elephant.off" --segments 6 \

@@ -377,6 +377,16 @@ const CLI::Validator positive_count_or_auto(
   },
   "N > 0 or auto");
 
+std::string count_or_auto(std::size_t k)
+{
+  return k == 0 ? std::string("auto") : std::to_string(k);
+}
+
+std::string count_in_words(std::size_t k)
+{
+  return k == 0 ? std::string("an automatic number of") : std::to_string(k);
+}
+
 std::string lower_extension(const std::string& path)
 {
   std::string ext = fs::path(path).extension().string();

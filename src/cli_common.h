@@ -172,6 +172,10 @@ double finite_number(const std::string& cell, const std::string& where);
 extern const CLI::Validator positive_count;
 // The same, or the word "auto", which becomes 0 (the library's "choose it").
 extern const CLI::Validator positive_count_or_auto;
+// A number of segments as such an option reads it: "auto" for 0, else the number (help defaults).
+std::string count_or_auto(std::size_t k);
+// The same in a progress line: "an automatic number of" for 0.
+std::string count_in_words(std::size_t k);
 
 // The extension of `path`, lower case (".ply").
 std::string lower_extension(const std::string& path);

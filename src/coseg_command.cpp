@@ -285,16 +285,13 @@ int run_coseg(const Coseg_command_options& o)
   }
 
   const CS::Consistent_segmentation_options& co = o.coseg;
-  const auto count_text = [](std::size_t k) {
-    return k == 0 ? std::string("an automatic number of") : std::to_string(k);
-  };
   const bool boundary_refinement = co.boundary_refinement && !o.no_refinement;
   if(symmetric)
     progress.stage("segmenting " + std::to_string(num_faces(meshes[0])) +
-                   " faces symmetrically into " + count_text(co.number_of_segments) + " segments");
+                   " faces symmetrically into " + count_in_words(co.number_of_segments) + " segments");
   else
     progress.stage("segmenting " + std::to_string(m) + " meshes consistently into " +
-                   count_text(co.number_of_segments) + " segments (" +
+                   count_in_words(co.number_of_segments) + " segments (" +
                    std::to_string(co.number_of_oversegments) + " over-segments each)");
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
   const auto np = CS::parameters::number_of_segments(co.number_of_segments)
@@ -333,7 +330,7 @@ int run_coseg(const Coseg_command_options& o)
     face_support = found.front().support;
     detection_seconds = detecting.seconds();
     progress.stage("segmenting " + std::to_string(num_faces(meshes[0])) + " faces symmetrically into " +
-                   count_text(co.number_of_segments) + " segments");
+                   count_in_words(co.number_of_segments) + " segments");
   }
   if(symmetric) {
     const Kernel::Plane_3 p(plane[0], plane[1], plane[2], plane[3]);
@@ -468,7 +465,7 @@ void add_coseg_command(CLI::App& app, std::function<int()>& run,
   cmd->add_option("-k,--segments", co.number_of_segments,
                   "Number of segments over the whole set, or auto: the median over the meshes of the "
                   "number `segment -k auto` chooses for each (the report's number_of_segments is then 0)")
-    ->default_str(co.number_of_segments == 0 ? std::string("auto") : std::to_string(co.number_of_segments))
+    ->default_str(count_or_auto(co.number_of_segments))
     ->transform(positive_count_or_auto);
   cmd->add_option("--oversegments", co.number_of_oversegments,
                   "Number of segments of each mesh before the joint merging")
@@ -524,7 +521,8 @@ void add_coseg_command(CLI::App& app, std::function<int()>& run,
                 "Progress on stderr even when it is not a terminal");
   CLI::Option* detect = cmd->add_flag("--symmetric", options->detect_plane,
                                       "Segment the one input mesh symmetrically about its best detected "
-                                      "reflective plane (the report has it)");
+                                      "reflective plane (the report has it), the mirror links weighted by "
+                                      "the plane's per-face support");
   cmd->callback([options, plane, detect, &run]() {
     if(plane->count() > 0 && detect->count() > 0)
       throw CLI::ValidationError("--symmetric", "give either --symmetric or --symmetry-plane, not both");

@@ -408,9 +408,7 @@ int run_partition_segment(const Partition_segment_options& o)
   const RC::Segment_with_partition_function_options& so = o.segmentation;
   const bool refinement = so.boundary_refinement && !o.no_refinement;
   progress.stage("segmenting " + std::to_string(num_faces(mesh)) + " faces into " +
-                 (so.number_of_segments == 0 ? std::string("an automatic number of")
-                                             : std::to_string(so.number_of_segments)) +
-                 " segments with the partition function");
+                 count_in_words(so.number_of_segments) + " segments with the partition function");
   auto segment_map = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:segment", 0).first;
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
   Stopwatch segmenting;
@@ -481,8 +479,12 @@ void add_partition_commands(CLI::App& app, std::function<int()>& run)
       // Without --method, what needs single cuts (the list of cuts, part sizes) samples min-cuts,
       // as the library's most_consistent_cuts() and multiscale_partition_function() do.
       if(cmd->count("--method") == 0 &&
-         (!o->cuts.empty() || !o->scales.empty() || cmd->count("--part-size") > 0))
+         (!o->cuts.empty() || !o->scales.empty() || cmd->count("--part-size") > 0)) {
+        if(cmd->count("--clusters") > 0 || cmd->count("--randomness") > 0)
+          throw CLI::ValidationError("--method", "give it: --clusters and --randomness are the hierarchical or "
+                                                 "kmeans sampler's, --cuts, --scales and --part-size imply mincut");
         o->sampling.sampling_method = RC::MIN_CUT;
+      }
       if(o->cuts.empty() && cmd->count("--max-cuts") > 0)
         throw CLI::ValidationError("--max-cuts", "needs --cuts");
       if(!o->scales.empty() && !o->cuts.empty())
@@ -503,8 +505,7 @@ void add_partition_commands(CLI::App& app, std::function<int()>& run)
     cmd->add_option("-k,--segments", o->segmentation.number_of_segments,
                     "Number of segments, or auto: the splits go on while the next cut follows concave creases, "
                     "4 to 12 segments (the report's number_of_segments is then 0, its segments the number chosen)")
-      ->default_str(o->segmentation.number_of_segments == 0 ? std::string("auto")
-                                                          : std::to_string(o->segmentation.number_of_segments))
+      ->default_str(count_or_auto(o->segmentation.number_of_segments))
       ->transform(positive_count_or_auto);
     cmd->add_option("-o,--output", o->output_ply,
                     "Coloured mesh (.ply, one colour and an integer 'segment' per face)");

@@ -59,9 +59,7 @@ int run_segment(const Segment_options& o)
   }
 
   progress.stage("segmenting " + std::to_string(num_faces(mesh)) + " faces into " +
-                 (o.segmentation.number_of_segments == 0 ? std::string("an automatic number of")
-                                                         : std::to_string(o.segmentation.number_of_segments)) +
-                 " segments");
+                 count_in_words(o.segmentation.number_of_segments) + " segments");
   auto segment_map = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:segment", 0).first;
   std::function<void(double)> on_progress = [&](double f) { progress.fraction(f); };
   const CS::Hierarchical_segmentation_options& so = o.segmentation;

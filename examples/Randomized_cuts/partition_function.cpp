@@ -44,11 +44,11 @@ int main(int argc, char** argv)
     for(edge_descriptor e : edges(mesh))
       sorted.push_back(value[e]);
     std::sort(sorted.begin(), sorted.end(), std::greater<double>());
-    std::cout << r.number_of_samples << " min-cut samples of " << num_faces(mesh)
+    std::cout << r.number_of_samples << " hierarchical samples of " << num_faces(mesh)
               << " faces; largest edge value " << sorted.front() << ", 99th percentile "
               << sorted[sorted.size() / 100] << "\n";
 
-    // The five most consistent cuts of the same samples (same seed, same samples).
+    // The five most consistent cuts, from min-cut samples (most_consistent_cuts()'s default).
     const std::vector<RC::Cut<Mesh>> cuts = RC::most_consistent_cuts(
       mesh, RC::parameters::number_of_samples(samples).random_seed(1).number_of_cuts(5));
     for(const RC::Cut<Mesh>& c : cuts)

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <type_traits>
 
 namespace CGAL {
 namespace Randomized_cuts {
@@ -46,7 +47,8 @@ struct Partition_function_options
   /// the seed of the random numbers
   std::uint64_t random_seed = 0;
   /// `MIN_CUT`: the part size \f$s\f$ of the penalty near the source and sink faces, as a fraction
-  /// of the relative distance (in \f$(0, 1/6]\f$)
+  /// of the relative distance (in \f$(0, 1/6]\f$); given without `sampling_method`, it selects
+  /// `MIN_CUT`
   double part_size = 0.05;
   /// `K_MEANS`: the number of seeds; `HIERARCHICAL`: the largest number of segments of the
   /// segmentations a run contributes (at least 2)
@@ -80,9 +82,17 @@ template <typename NamedParameters>
 void read_partition_function_options(const NamedParameters& np, Partition_function_options& o)
 {
   using CGAL::Shape_analysis::internal::parameter_value;
+  using CGAL::parameters::get_parameter;
   namespace snp = CGAL::Shape_analysis::internal_np;
   namespace cnp = CGAL::internal_np;
   o.sampling_method = parameter_value(np, snp::sampling_method_tag, o.sampling_method);
+  // A part size is the min-cut sampler's: given without a sampler, it selects MIN_CUT.
+  constexpr bool has_method = !std::is_same<decltype(get_parameter(np, snp::sampling_method_tag)),
+                                            CGAL::internal_np::Param_not_found>::value;
+  constexpr bool has_part_size = !std::is_same<decltype(get_parameter(np, snp::part_size_tag)),
+                                               CGAL::internal_np::Param_not_found>::value;
+  if constexpr(has_part_size && !has_method)
+    o.sampling_method = MIN_CUT;
   o.number_of_samples = parameter_value(np, cnp::number_of_samples, o.number_of_samples);
   o.convergence_tolerance = parameter_value(np, snp::convergence_tolerance_tag, o.convergence_tolerance);
   o.random_seed = parameter_value(np, cnp::random_seed, o.random_seed);

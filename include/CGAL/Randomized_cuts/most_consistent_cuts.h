@@ -106,7 +106,8 @@ Most_consistent_cuts_options most_consistent_cuts_options(const NamedParameters&
 /*!
 \ingroup PkgRandomizedCutsRef
 
-Samples segmentations of a triangle mesh as `partition_function()` does and returns their distinct
+Samples segmentations of a triangle mesh as `partition_function()` does (with `MIN_CUT` by default,
+see `Most_consistent_cuts_options`) and returns their distinct
 cuts, the most consistent first (\cgalCite{Golovinskiy2010}, section 3.4).
 
 The consistency of a sampled segmentation is the length-weighted mean of the partition function

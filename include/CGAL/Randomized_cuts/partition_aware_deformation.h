@@ -382,7 +382,7 @@ boundaries.
         example `CGAL::Surface_mesh`)
 \tparam EdgeValueMap a model of `ReadablePropertyMap` with
         `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key and a floating-point type as
-        value, for example the map filled by `partition_function()`
+        value, for example the map filled by `partition_function()` with `sampling_method(MIN_CUT)`
 \tparam ControlVertexRange a range of `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
 \tparam TargetPointRange a range of points (of the point type of the vertex point map, or of any
         type with `x()`, `y()`, `z()`), one per control vertex, in the same order

@@ -153,7 +153,8 @@ threads.
   \cgalParamNEnd
   \cgalParamNBegin{part_size}
     \cgalParamDescription{`MIN_CUT`: the part size \f$s\f$ of the penalty near the source and sink
-      faces, as a fraction of the relative distance}
+      faces, as a fraction of the relative distance; given without `sampling_method`, it selects
+      `MIN_CUT`}
     \cgalParamType{`double`}
     \cgalParamDefault{`Partition_function_options::part_size`}
     \cgalParamExtra{must be in \f$(0, 1/6]\f$}

@@ -409,7 +409,8 @@ the result is the same for any number of threads.
   \cgalParamNBegin{sampling_method / part_size / number_of_clusters / randomness / convergence_tolerance / score_weighting / concavity_exponent / component_link_distance / component_link_factor}
     \cgalParamDescription{passed on to `partition_function()` for both meshes}
     \cgalParamType{see `partition_function()`}
-    \cgalParamDefault{see `partition_function()`}
+    \cgalParamDefault{those of `Register_meshes_options` (`sampling_method`: `MIN_CUT`), the others
+      as for `partition_function()`}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_point_map}
     \cgalParamDescription{a property map associating points to the vertices of the mesh}

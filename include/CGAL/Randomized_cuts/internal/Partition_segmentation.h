@@ -145,7 +145,7 @@ private:
     }
     Sampling_options so = m_sampling;
     // The whole graph is sampled with the caller's seed (its partition function is then the one
-    // partition_function() gives); every later segment with a seed of its own.
+    // partition_function() gives with MIN_CUT); every later segment with a seed of its own.
     so.random_seed = index == 0 ? m_sampling.random_seed
                                 : SAI::Random_stream::mix(m_sampling.random_seed + 0x9E3779B97F4A7C15ull * index);
     so.keep_samples = true;
