@@ -183,8 +183,8 @@ int run_symmetrize(const Symmetrize_command_options& o)
   Symmetry symmetry;
   double detect_seconds = 0;
   bool detected = false;
-  std::vector<Symmetry> all;
-  const auto r = symmetrize_input(o, input, progress, symmetry, detect_seconds, detected, &all);
+  Used_symmetries used;
+  const auto r = symmetrize_input(o, input, progress, symmetry, detect_seconds, detected, &used);
   const double seconds = watch.seconds();
   const std::vector<Point_3> points = moved_points(input, input.mesh);
   if(!o.output_off.empty()) {
@@ -198,7 +198,7 @@ int run_symmetrize(const Symmetrize_command_options& o)
   if(!o.report.empty()) {
     Json report = input_report("symmetry symmetrize", o.input, input);
     report["parameters"] = symmetrization_parameters(o);
-    add_symmetrization_report(report, r, symmetry, detected, detect_seconds, all);
+    add_symmetrization_report(report, r, symmetry, detected, detect_seconds, used);
     stage_report(outputs, o.report, report, seconds, read_seconds, total.seconds(),
                  {{"mesh", o.output_off}, {"map", o.map}});
   }
@@ -241,11 +241,11 @@ int run_enhance(const Enhance_options& o)
     Symmetry symmetry;
     double detect_seconds = 0;
     bool detected = false;
-    std::vector<Symmetry> all;
-    const auto r = symmetrize_input(o, input, progress, symmetry, detect_seconds, detected, &all);
+    Used_symmetries used;
+    const auto r = symmetrize_input(o, input, progress, symmetry, detect_seconds, detected, &used);
     symmetric = moved_points(input, input.mesh);
     report["parameters"] = symmetrization_parameters(o);
-    add_symmetrization_report(report, r, symmetry, detected, detect_seconds, all);
+    add_symmetrization_report(report, r, symmetry, detected, detect_seconds, used);
   }
   std::vector<Point_3> enhanced(original.size());
   for(std::size_t i = 0; i < original.size(); ++i)

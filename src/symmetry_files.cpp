@@ -108,6 +108,13 @@ void add_several_planes_option(CLI::App* cmd, Symmetrize_command_options& o)
                   "weighted by its support (partial symmetries)")
     ->capture_default_str()
     ->check(positive_count);
+  cmd->add_option("--regularize", o.regularize,
+                  "With several planes: make those nearly perpendicular perpendicular, those nearly sharing an axis "
+                  "share it (at multiples of pi/k), duplicates dropped, turning a plane by at most this many degrees "
+                  "(0 to 30; default " +
+                    Json(SMS::Regularize_symmetries_options().maximum_angle).dump() +
+                    " for detected planes, 0 = off for planes given)")
+    ->check(CLI::Range(0.0, 30.0));
 }
 
 void check_symmetry_options(const Symmetrize_command_options& o)
@@ -116,6 +123,8 @@ void check_symmetry_options(const Symmetrize_command_options& o)
     throw Usage_error("give either --plane or --rotation, not both");
   if(o.detected_planes != 1 && (!o.plane.empty() || o.rotation_requested))
     throw Usage_error("--detected-planes is for detected planes: not with --plane or --rotation");
+  if(o.regularize >= 0 && o.planes.size() < 2 && o.detected_planes < 2)
+    throw Usage_error("--regularize is for several planes (--plane repeated, or --detected-planes N)");
   for(const std::string& p : o.planes)
     parse_plane(p);
   if(o.rotation_requested && !o.rotation.empty())
@@ -212,11 +221,41 @@ std::string plane_text(const Symmetry& s)
 
 // ---------------------------------------------------------------------------------------------
 
+// Several planes regularized (regularize_symmetries()) when --regularize asks for it, or by default
+// when they were detected; what it did as the report's "regularization" (null when not run).
+Json regularize(const Symmetrize_command_options& o, const Input_mesh& input, std::vector<Symmetry>& symmetries)
+{
+  const double angle = o.regularize >= 0 ? o.regularize
+                                         : (o.planes.size() <= 1 ? SMS::Regularize_symmetries_options().maximum_angle : 0.0);
+  if(!(angle > 0))
+    return Json();
+  const std::vector<Symmetry> r = SMS::regularize_symmetries(input.mesh, symmetries, SMS::parameters::maximum_angle(angle));
+  // Each plane kept turned from the nearest plane given: the largest such turn.
+  const auto unit_normal = [](const Symmetry& s) {
+    const Kernel::Vector_3 n = s.plane.orthogonal_vector();
+    return n / std::sqrt(CGAL::to_double(n.squared_length()));
+  };
+  double turn = 0;
+  for(const Symmetry& x : r) {
+    double c = 0;
+    for(const Symmetry& s : symmetries)
+      c = (std::max)(c, std::abs(CGAL::to_double(unit_normal(x) * unit_normal(s))));
+    turn = (std::max)(turn, std::acos((std::min)(1.0, c)) * 180 / 3.14159265358979323846);
+  }
+  Json j;
+  j["maximum_angle"] = angle;
+  j["maximum_offset"] = SMS::Regularize_symmetries_options().maximum_offset;
+  j["largest_turn_degrees"] = turn;
+  j["dropped"] = symmetries.size() - r.size();
+  symmetries = r;
+  return j;
+}
+
 // Symmetrizes `input.mesh` in place; returns the result and the symmetry used.
 SMS::Symmetrization_result<Kernel> symmetrize_input(const Symmetrize_command_options& o, Input_mesh& input,
                                                     Progress& progress, Symmetry& symmetry,
                                                     double& detect_seconds, bool& detected,
-                                                    std::vector<Symmetry>* all)
+                                                    Used_symmetries* used)
 {
   std::vector<Symmetry> symmetries;
   if(o.rotation_requested) {
@@ -258,10 +297,15 @@ SMS::Symmetrization_result<Kernel> symmetrize_input(const Symmetrize_command_opt
     symmetry = symmetries.front();
   } else
     symmetry = symmetry_of(o, input.mesh, progress, detect_seconds, detected);
+  Json regularization;
+  if(symmetries.size() > 1) { // several planes: their relations made exact
+    regularization = regularize(o, input, symmetries);
+    symmetry = symmetries.front();
+  }
   if(symmetries.empty())
     symmetries.push_back(symmetry);
-  if(all != nullptr)
-    *all = symmetries;
+  if(used != nullptr)
+    *used = Used_symmetries{symmetries, regularization};
   progress.stage("symmetrizing " + std::to_string(num_vertices(input.mesh)) + " vertices " +
                  (symmetry.is_reflection ? "about the plane " + plane_text(symmetry)
                                          : std::string("under the turn ") + rotation_json(symmetry).dump()));
@@ -304,16 +348,17 @@ Json symmetrization_parameters(const Symmetrize_command_options& o)
 
 void add_symmetrization_report(Json& report, const SMS::Symmetrization_result<Kernel>& r,
                                const Symmetry& s, bool detected, double detect_seconds,
-                               const std::vector<Symmetry>& all)
+                               const Used_symmetries& used)
 {
-  if(all.size() > 1) { // each plane, with its support fraction (1 for a plane given)
+  if(used.all.size() > 1) { // each plane, with its support fraction (1 for a plane given)
     Json planes = Json::array();
-    for(const Symmetry& x : all) {
+    for(const Symmetry& x : used.all) {
       Json j = plane_json(x);
       j["support"] = x.support_fraction;
       planes.push_back(j);
     }
     report["planes"] = planes;
+    report["regularization"] = used.regularization;
   }
   if(s.is_reflection) {
     report["plane"] = plane_json(s);

@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh_symmetrization/compute_symmetric_map.h>
 #include <CGAL/Surface_mesh_symmetrization/detect_reflective_symmetries.h>
 #include <CGAL/Surface_mesh_symmetrization/detect_rotational_symmetries.h>
+#include <CGAL/Surface_mesh_symmetrization/regularize_symmetries.h>
 #include <CGAL/Surface_mesh_symmetrization/symmetrize.h>
 
 #include <CLI/CLI.hpp>
@@ -51,12 +52,23 @@ struct Symmetrize_command_options : Common_options
   std::string rotation;
   bool rotation_requested = false;
   std::size_t detected_planes = 1; // without --plane: how many of the best detected planes
+  // --regularize DEG: regularize_symmetries()'s maximum_angle for several planes; negative (not
+  // given): the library's default for detected planes, none for planes given.
+  double regularize = -1;
+};
+
+// The symmetries a symmetrization used, several planes with what their regularization did
+// (`regularization`: null when it did not run, else maximum_angle, largest_turn_degrees, dropped).
+struct Used_symmetries
+{
+  std::vector<Symmetry> all;
+  Json regularization;
 };
 
 // Adds --rotation to `cmd` (symmetrize, enhance); `o.rotation_requested` is set by
 // note_rotation_option() from the command's callback.
 void add_rotation_option(CLI::App* cmd, Symmetrize_command_options& o);
-// Adds --detected-planes to `cmd` (symmetrize, enhance).
+// Adds --detected-planes and --regularize to `cmd` (symmetrize, enhance).
 void add_several_planes_option(CLI::App* cmd, Symmetrize_command_options& o);
 void note_rotation_option(const CLI::App* cmd, Symmetrize_command_options& o);
 
@@ -89,19 +101,19 @@ std::string plane_text(const Symmetry& s);
 
 // Symmetrizes `input.mesh` in place (the plane or, with --rotation, the turn given or detected);
 // returns the result and the symmetry used.
-// With several planes (--plane repeated, or --detected-planes N), `symmetry` is the first and
-// `all` (when given) receives them all.
+// With several planes (--plane repeated, or --detected-planes N), regularized by --regularize
+// (by default when detected), `symmetry` is the first and `used` (when given) receives them all.
 SMS::Symmetrization_result<Kernel> symmetrize_input(const Symmetrize_command_options& o, Input_mesh& input,
                                                     Progress& progress, Symmetry& symmetry,
                                                     double& detect_seconds, bool& detected,
-                                                    std::vector<Symmetry>* all = nullptr);
+                                                    Used_symmetries* used = nullptr);
 
 // The options of symmetrize() as the library's named parameters, and the report's figures of a
 // symmetrization.
 Json symmetrization_parameters(const Symmetrize_command_options& o);
 void add_symmetrization_report(Json& report, const SMS::Symmetrization_result<Kernel>& r,
                                const Symmetry& s, bool detected, double detect_seconds,
-                               const std::vector<Symmetry>& all = {});
+                               const Used_symmetries& used = {});
 
 
 // Adds `remesh` and `decimate` to the `symmetry` command (symmetry_remesh_command.cpp).

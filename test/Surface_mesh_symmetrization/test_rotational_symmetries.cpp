@@ -15,6 +15,8 @@
 #include <CGAL/Surface_mesh_symmetrization/symmetrize.h>
 #include <Shape_analysis_support/Procedural_symmetric_shapes.h>
 
+#include "random_pose.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -34,25 +36,8 @@ namespace SAS = CGAL::Shape_analysis_support;
 typedef SY::Rotational_symmetry<Kernel> Rotation;
 typedef SAI::Vector_3d Vector_3d;
 
-// A pose: a turn about a random axis and a translation, from `seed`.
-struct Pose
-{
-  Vector_3d axis, shift;
-  double angle = 0;
-  Vector_3d operator()(const Vector_3d& p) const { return SYI::turn(axis, angle, p) + shift; }
-};
-
-Pose random_pose(unsigned seed)
-{
-  std::mt19937 random(seed);
-  std::normal_distribution<double> normal;
-  Pose t;
-  t.axis = Vector_3d(normal(random), normal(random), normal(random));
-  t.axis = t.axis / t.axis.length();
-  t.angle = std::uniform_real_distribution<double>(0, 6.283)(random);
-  t.shift = Vector_3d(normal(random), normal(random), normal(random)) * 3.0;
-  return t;
-}
+using symmetry_test_support::Pose;
+using symmetry_test_support::random_pose;
 
 Mesh blob(std::size_t k, const Pose& pose, double warp = 0)
 {
