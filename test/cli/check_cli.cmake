@@ -5,7 +5,9 @@ cmake_minimum_required(VERSION 3.16)
 # failure: non-zero exit (EXIT_CODE if given), exactly one line on stderr naming the problem
 #          (MESSAGE regex if given), and none of OUTPUTS written (nor temporary files).
 # success: zero exit and every one of OUTPUTS written; LINES=<n> checks the line count of the
-#          first output.
+#          first output, CONTAINS="a|b" that the last one contains each text, and
+#          JSON_VALUES="a.b=3|c=2..12" that the last one (a JSON report) has each member (a path of
+#          member names separated by '.') equal to a number or in a range of numbers.
 string(REPLACE "|" ";" args "${ARGS}")
 string(REPLACE "|" ";" outputs "${OUTPUTS}")
 file(REMOVE_RECURSE "${WORK}")
@@ -89,6 +91,25 @@ else()
       string(FIND "${content}" "${k}" pos)
       if(pos EQUAL -1)
         message(FATAL_ERROR "${last} does not contain ${k}")
+      endif()
+    endforeach()
+  endif()
+  if(DEFINED JSON_VALUES)
+    list(GET resolved_outputs -1 last)
+    file(READ "${last}" content)
+    string(REPLACE "|" ";" specs "${JSON_VALUES}")
+    foreach(spec ${specs})
+      if(NOT spec MATCHES "^([^=]+)=([^=]+)$")
+        message(FATAL_ERROR "JSON_VALUES: cannot read '${spec}'")
+      endif()
+      set(member "${CMAKE_MATCH_1}")
+      string(REPLACE ".." ";" bounds "${CMAKE_MATCH_2}")
+      list(GET bounds 0 low)
+      list(GET bounds -1 high)
+      string(REPLACE "." ";" path "${member}")
+      string(JSON value GET "${content}" ${path})
+      if(value LESS low OR value GREATER high)
+        message(FATAL_ERROR "${last}: ${member} is ${value}, expected ${low} to ${high}")
       endif()
     endforeach()
   endif()
