@@ -358,8 +358,9 @@ void add_symmetrization_report(Json& report, const SMS::Symmetrization_result<Ke
       planes.push_back(j);
     }
     report["planes"] = planes;
-    report["regularization"] = used.regularization;
   }
+  if(used.all.size() > 1 || !used.regularization.is_null()) // (one plane left after dropping duplicates)
+    report["regularization"] = used.regularization;
   if(s.is_reflection) {
     report["plane"] = plane_json(s);
     report["plane_detected"] = detected;

@@ -215,11 +215,15 @@ TEST(RegularizeSymmetries, NothingMovesBeyondTheTolerance)
   const std::vector<Symmetry> apart = SY::regularize_symmetries(mesh, loose, SY::parameters::maximum_offset(0.001));
   EXPECT_NEAR(offset_of(apart[2]), offset_of(loose[2]), 1e-12);
   EXPECT_NEAR(through_line(apart), through_line(loose), 1e-12);
-  // maximum_angle 0: nothing changes.
-  const std::vector<Symmetry> same = SY::regularize_symmetries(mesh, loose, SY::parameters::maximum_angle(0).maximum_offset(0));
+  // maximum_angle 0: no plane turns or moves (only duplicates would be dropped).
+  const std::vector<Symmetry> near = {plane(y, Vector_3d()), plane(tilt(x, y, 1.0), Vector_3d()),
+                                      plane(Vector_3d(1, 1, 0), Vector_3d(0.02, 0, 0))};
+  const std::vector<Symmetry> same = SY::regularize_symmetries(mesh, near, SY::parameters::maximum_angle(0));
   ASSERT_EQ(same.size(), 3u);
-  for(std::size_t i = 0; i < 3; ++i)
-    EXPECT_LT(degrees_between(normal_of(same[i]), normal_of(loose[i])), 1e-9) << i;
+  for(std::size_t i = 0; i < 3; ++i) {
+    EXPECT_LT(degrees_between(normal_of(same[i]), normal_of(near[i])), 1e-9) << i;
+    EXPECT_NEAR(offset_of(same[i]), offset_of(near[i]), 1e-12) << i;
+  }
 }
 
 TEST(RegularizeSymmetries, DuplicatesAreDroppedAndOtherMapsKept)
@@ -227,14 +231,18 @@ TEST(RegularizeSymmetries, DuplicatesAreDroppedAndOtherMapsKept)
   const Mesh mesh = blob(Motion());
   const Vector_3d x(1, 0, 0), y(0, 1, 0);
   Kernel::Aff_transformation_3 shear(1, 0.2, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1);
+  Kernel::Aff_transformation_3 screw(0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0.1, 1); // a quarter turn and a slide
   const std::vector<Symmetry> in = {plane(y, Vector_3d()), SY::affine_symmetry<Kernel>(shear),
-                                    plane(tilt(y, x, 0.4) * -1.0, Vector_3d(0, 0.005, 0)), plane(x, Vector_3d())};
+                                    plane(tilt(y, x, 0.4) * -1.0, Vector_3d(0, 0.005, 0)),
+                                    plane(tilt(x, y, 0.5), Vector_3d()), SY::affine_symmetry<Kernel>(screw)};
   const std::vector<Symmetry> out = SY::regularize_symmetries(mesh, in);
-  ASSERT_EQ(out.size(), 3u); // the second y plane is the first one again
+  ASSERT_EQ(out.size(), 4u); // the second y plane is the first one again
   EXPECT_FALSE(out[1].is_reflection);
   EXPECT_EQ(out[1].transformation.m(0, 1), 0.2);
   EXPECT_TRUE(out[2].is_reflection);
-  EXPECT_LT(degrees_between(normal_of(out[2]), x), 1e-9);
+  EXPECT_LT(degrees_between(normal_of(out[2]), x), 1e-9); // made perpendicular to the first
+  EXPECT_EQ(out[3].transformation.m(2, 3), 0.1);          // the screw kept as it is
+  EXPECT_EQ(out[3].transformation.m(0, 1), -1.0);
   // Scores and supports are carried over.
   std::vector<Symmetry> scored = in;
   scored[3].score = 0.01;

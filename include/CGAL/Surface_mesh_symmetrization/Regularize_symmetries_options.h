@@ -26,9 +26,9 @@ struct Regularize_symmetries_options
 {
   /// the largest angle, in degrees, by which a plane's normal or a rotation's axis is turned to
   /// make a relation exact (parallel, perpendicular, a common axis, angles of \f$\pi / k\f$), in
-  /// \f$[0, 30]\f$; 0 changes nothing but drops exact duplicates. Two degrees by default: the
+  /// \f$[0, 30]\f$; 0 changes nothing but drops the duplicates. Two degrees by default: the
   /// detected planes of CGAL's and the Princeton benchmark's meshes that are perpendicular by
-  /// design are within half a degree of it
+  /// design are within about 0.6 degree of it
   double maximum_angle = 2;
   /// the largest distance by which a plane or an axis is moved onto a common axis (or found to
   /// repeat another), as a fraction of the bounding-box diagonal of the mesh, in \f$[0, 1]\f$

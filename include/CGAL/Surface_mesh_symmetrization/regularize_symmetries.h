@@ -8,6 +8,7 @@
 
 #include <CGAL/Surface_mesh_symmetrization/Regularize_symmetries_options.h>
 #include <CGAL/Surface_mesh_symmetrization/Symmetry.h>
+#include <CGAL/Surface_mesh_symmetrization/detect_rotational_symmetries.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Symmetry_regularization.h>
 
 #include <cmath>
@@ -30,8 +31,9 @@ two planes \f$89.5\f$ degrees apart compose to a turn by \f$179\f$ degrees, whic
 `symmetrize()` about such planes cannot reach all of them and distorts the mesh trying; about the
 regularized planes it can.
 
-Each reflection is a plane, each affine map whose linear part is a rotation (not the identity) a
-turn about an axis; other affine symmetries are returned unchanged. With \f$\theta\f$ =
+Each reflection is a plane, each affine map whose linear part is a rotation (not the identity)
+and that slides nothing along its axis a turn about an axis (a turn within \f$\theta\f$ of
+\f$2\pi/k\f$ becomes exactly \f$2\pi/k\f$); other affine symmetries are returned unchanged. With \f$\theta\f$ =
 `maximum_angle` and \f$\delta\f$ = `maximum_offset` times the bounding-box diagonal:
 
 1. **Common axes.** The lines of the rotations, then the lines where two planes meet (in the order
@@ -48,8 +50,10 @@ turn about an axis; other affine symmetries are returned unchanged. With \f$\the
    passes through one point (least squares).
 2. **Parallel and perpendicular directions.** In the order of the input, each group's axis (with
    its group), ungrouped plane normal and ungrouped rotation axis is made parallel to a direction
-   fixed before it if within \f$\theta\f$ of parallel; otherwise perpendicular to the one or two
-   fixed directions it is within \f$\theta\f$ of perpendicular to. A group is then turned about
+   fixed before it if within \f$\theta\f$ of parallel; otherwise, if it is within \f$\theta\f$ of
+   perpendicular to two fixed directions and within \f$\theta\f$ of their cross product, made
+   that cross product, else perpendicular to the first fixed direction it is within \f$\theta\f$
+   of perpendicular to. A group is then turned about
    its axis so that one of its planes is parallel to a fixed direction, when one is within
    \f$\theta\f$. A plane that turns keeps its point nearest the mesh's area centroid; a rotation
    keeps its angle.
@@ -58,13 +62,16 @@ turn about an axis; other affine symmetries are returned unchanged. With \f$\the
    step (a duplicate would count twice in a group) and again after the second.
 
 Earlier symmetries therefore take precedence: give the best first (as the detections return
-them). The relations are exact to rounding (about \f$10^{-15}\f$): three perpendicular planes
+them); the first does not turn unless it belongs to a group, whose members are all fitted
+together. `maximum_angle` 0 only drops the duplicates. The relations are exact to rounding (about \f$10^{-15}\f$): three perpendicular planes
 generate a group of 8 maps, \f$k\f$ planes about one axis at angles of \f$\pi/k\f$ a group of
 \f$2k\f$. The result depends on the input's order only, not on the pose of the mesh; it is
 equivariant under rigid motions.
 
 Each symmetry returned keeps its `score`, `support_fraction` and `support` (measured for the
-symmetry before the change; the change is at most \f$\theta\f$ and \f$\delta\f$).
+symmetry before the change). The change is small but its bounds are approximate: a normal turns
+by about \f$\theta\f$ at most (a group's least-squares fit, then its turn, may add to it), and a
+plane moves by about \f$\delta\f$ plus its turn times its distance to the centroid.
 
 \tparam TriangleMesh a model of `FaceListGraph`
 \tparam SymmetryRange a range of `Symmetry<K>`, `K` the kernel of the mesh's points
@@ -119,8 +126,8 @@ regularize_symmetries(const TriangleMesh& tm, const SymmetryRange& symmetries,
 {
   typedef typename std::iterator_traits<typename SymmetryRange::const_iterator>::value_type Symmetry_type;
   typedef typename Symmetry_type::Plane_3 Plane_3;
-  typedef typename Symmetry_type::Transformation Transformation;
-  typedef typename Plane_3::R::FT FT;
+  typedef typename Plane_3::R Kernel;
+  typedef typename Kernel::FT FT;
   const std::string who = "regularize_symmetries";
   const Regularize_symmetries_options o = regularize_symmetries_options(np);
   if(!(o.maximum_angle >= 0 && o.maximum_angle <= 30))
@@ -150,15 +157,12 @@ regularize_symmetries(const TriangleMesh& tm, const SymmetryRange& symmetries,
       continue;
     Symmetry_type y;
     if(x.kind == internal::Regular_symmetry::PLANE)
-      y = reflective_symmetry<typename Plane_3::R>(
-        Plane_3(FT(x.direction.x), FT(x.direction.y), FT(x.direction.z), FT(-x.offset)));
-    else if(x.kind == internal::Regular_symmetry::ROTATION) {
-      const internal::Affine_3d a = internal::rotation_map(x);
-      y.transformation = Transformation(
-        FT(a.linear[0].x), FT(a.linear[0].y), FT(a.linear[0].z), FT(a.translation.x), FT(a.linear[1].x),
-        FT(a.linear[1].y), FT(a.linear[1].z), FT(a.translation.y), FT(a.linear[2].x), FT(a.linear[2].y),
-        FT(a.linear[2].z), FT(a.translation.z), FT(1));
-    } else
+      y = reflective_symmetry<Kernel>(Plane_3(FT(x.direction.x), FT(x.direction.y), FT(x.direction.z), FT(-x.offset)));
+    else if(x.kind == internal::Regular_symmetry::ROTATION)
+      y = rotational_symmetry<Kernel>(typename Kernel::Point_3(FT(x.point.x), FT(x.point.y), FT(x.point.z)),
+                                      typename Kernel::Vector_3(FT(x.direction.x), FT(x.direction.y), FT(x.direction.z)),
+                                      x.angle);
+    else
       y = s;
     y.score = s.score;
     y.support_fraction = s.support_fraction;

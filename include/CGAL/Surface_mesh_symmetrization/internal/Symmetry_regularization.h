@@ -82,6 +82,8 @@ inline Regular_symmetry regular_symmetry(const Affine_3d& a, bool is_reflection,
   // The axis' points p solve (I - L) p = t; the least-squares solution, then the one nearest `centre`.
   Eigen::JacobiSVD<Eigen::Matrix3d> s2(Eigen::Matrix3d::Identity() - l, Eigen::ComputeFullU | Eigen::ComputeFullV);
   s2.setThreshold(1e-9);
+  if(std::abs(SAI::dot(axis, a.translation)) > 1e-9 * (std::max)(1.0, a.translation.length()))
+    return r; // a screw motion (a turn and a slide along the axis): left as it is
   const Eigen::Vector3d p = s2.solve(Eigen::Vector3d(a.translation.x, a.translation.y, a.translation.z));
   Vector_3d q(p(0), p(1), p(2));
   q = q + axis * SAI::dot(centre - q, axis);
@@ -90,20 +92,6 @@ inline Regular_symmetry regular_symmetry(const Affine_3d& a, bool is_reflection,
   r.point = q;
   r.angle = angle;
   return r;
-}
-
-// The affine map of a rotation element.
-inline Affine_3d rotation_map(const Regular_symmetry& r)
-{
-  Affine_3d a;
-  const Vector_3d unit_vectors[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  for(int j = 0; j < 3; ++j) {
-    const Vector_3d c = turn(r.direction, r.angle, unit_vectors[j]);
-    for(int i = 0; i < 3; ++i)
-      a.linear[std::size_t(i)][j] = c[i];
-  }
-  a.translation = r.point - SAI::multiply(a.linear, r.point);
-  return a;
 }
 
 // The order k of a turn by 2 pi / k (within 1e-3 of the angle), 0 when it is no such turn.
@@ -124,6 +112,12 @@ public:
       m_centre(centre)
   {
     drop_duplicates(); // before the groups, which they would weigh twice
+    if(!(angle > 0))
+      return; // no turn allowed: the duplicates only
+    for(Regular_symmetry& s : m_s) // a k-fold turn by 2 pi / k exactly
+      if(s.kind == Regular_symmetry::ROTATION && turn_order(s.angle) > 0 &&
+         std::abs(s.angle - 2 * 3.14159265358979323846 / double(turn_order(s.angle))) <= angle)
+        s.angle = 2 * 3.14159265358979323846 / double(turn_order(s.angle));
     find_groups();
     for(Group& g : m_groups)
       fit_group(g);
