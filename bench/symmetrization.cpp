@@ -5,7 +5,8 @@
 // vertex halfway to the image of its mirror point.
 //
 //   bench_symmetrization [--data DIR] [--meshes camel,cow,...] [--repeats 5] [--no-large]
-//                        [--large-repeats 1] [--threads 0] [--output FILE]
+//                        [--large-repeats 1] [--threads 0] [--several a.off,b.off] [--planes 4]
+//                        [--output FILE]
 //
 //   - CGAL's meshes (camel, cow, triceratops, homer, head, man): the best detected plane
 //     (detection timed apart), then symmetrize();
@@ -13,7 +14,10 @@
 //     asymmetric warp (the thesis: about 4 s for a mesh of about 1,200 vertices), median time of
 //     --repeats runs;
 //   - man.off Loop-subdivided twice with CGAL (279,890 vertices; the thesis: 10 minutes for
-//     240,000 vertices), unless --no-large.
+//     240,000 vertices), unless --no-large;
+//   - each mesh of --several: its --planes best detected planes (seed 1) symmetrized at once, as
+//     detected and regularized by regularize_symmetries() (angles between the planes, error,
+//     distortion, time of each).
 // Symmetry error: RMS over the vertices of the distance from a vertex's mirror image to the
 // surface, relative to the bounding-box diagonal. Distortion: RMS relative change of the edge
 // lengths ("distortion") and of the edge vectors ("edge_vector_distortion"). Each mesh is also
@@ -31,6 +35,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <CGAL/Surface_mesh_symmetrization/detect_reflective_symmetries.h>
+#include <CGAL/Surface_mesh_symmetrization/regularize_symmetries.h>
 #include <Shape_analysis_support/Procedural_symmetric_shapes.h>
 #include <Shape_analysis_support/Symmetry_metrics.h>
 #include <CGAL/Surface_mesh_symmetrization/symmetrize.h>
@@ -163,13 +168,56 @@ Symmetry best_plane(const Mesh& m, std::size_t threads, double& seconds)
   return found.front();
 }
 
+// Several detected planes symmetrized at once, as detected and regularized (regularize_symmetries()):
+// the angles between them, and symmetrize()'s error, distortion and time for each set.
+Json several_planes(const std::string& path, std::size_t planes, std::size_t threads)
+{
+  Mesh m;
+  if(!CGAL::IO::read_polygon_mesh(path, m) || faces(m).empty())
+    throw std::runtime_error("cannot read " + path);
+  std::vector<Symmetry> found;
+  SY::detect_reflective_symmetries(m, std::back_inserter(found), SY::parameters::maximum_number_of_symmetries(planes)
+                                                                   .random_seed(1)
+                                                                   .number_of_threads(threads));
+  const std::vector<Symmetry> regular = SY::regularize_symmetries(m, found);
+  const auto angles = [](const std::vector<Symmetry>& set) {
+    Json a = Json::array();
+    for(std::size_t i = 0; i < set.size(); ++i)
+      for(std::size_t j = i + 1; j < set.size(); ++j) {
+        const Kernel::Vector_3 n = set[i].plane.orthogonal_vector(), k = set[j].plane.orthogonal_vector();
+        const double c = std::abs(n * k) / std::sqrt(n.squared_length() * k.squared_length());
+        a.push_back(std::acos((std::min)(1.0, c)) * 180 / 3.14159265358979323846);
+      }
+    return a;
+  };
+  Json j;
+  j["mesh"] = path;
+  j["vertices"] = num_vertices(m);
+  for(const auto& [name, set] : {std::make_pair("detected", found), std::make_pair("regularized", regular)}) {
+    Mesh copy = m;
+    const auto start = std::chrono::steady_clock::now();
+    const auto r = SY::symmetrize(copy, set, SY::parameters::number_of_threads(threads));
+    Json k;
+    k["planes"] = set.size();
+    k["angles_degrees"] = angles(set);
+    k["seconds"] = seconds_since(start);
+    k["symmetry_error_before"] = r.symmetry_error_before;
+    k["symmetry_error_after"] = r.symmetry_error_after;
+    k["distortion"] = r.distortion;
+    j[name] = k;
+    std::cerr << path << " " << name << ": error " << r.symmetry_error_after << ", distortion " << r.distortion << "\n";
+  }
+  return j;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
   std::string data = SHAPE_ANALYSIS_DATA_DIR, output;
   std::vector<std::string> names = {"camel", "cow", "triceratops", "homer", "head", "man"};
-  std::size_t repeats = 5, repeats_large = 1, threads = 0;
+  std::vector<std::string> several;
+  std::size_t repeats = 5, repeats_large = 1, threads = 0, planes = 4;
   bool large = true;
   for(Arguments args(argc, argv); args.next();) {
     const std::string a = args.flag();
@@ -185,11 +233,15 @@ int main(int argc, char** argv)
       threads = std::stoul(args.value());
     else if(a == "--no-large")
       large = false;
+    else if(a == "--several")
+      several = split(args.value());
+    else if(a == "--planes")
+      planes = std::max<std::size_t>(2, std::stoul(args.value()));
     else if(a == "--output")
       output = args.value();
     else {
       std::cerr << "usage: bench_symmetrization [--data DIR] [--meshes a,b] [--repeats N] [--no-large] "
-                   "[--large-repeats N] [--threads N] [--output FILE]\n";
+                   "[--large-repeats N] [--threads N] [--several a.off,b.off] [--planes N] [--output FILE]\n";
       return 2;
     }
   }
@@ -230,6 +282,11 @@ int main(int argc, char** argv)
     meshes.push_back(j);
   }
   result["meshes"] = meshes;
+
+  Json sets = Json::array();
+  for(const std::string& path : several)
+    sets.push_back(several_planes(path, planes, threads));
+  result["several_planes"] = sets;
 
   if(large) {
     Mesh m;
