@@ -617,6 +617,25 @@ TEST(Symmetric, MirrorFacesShareTheirSegment)
   }
 }
 
+TEST(Symmetric, EachMirrorLinkCountsWithTheLowerSupportOfItsFaces)
+{
+  namespace CSI = CGAL::Consistent_segmentation::internal;
+  const std::vector<double> support = {1.0, 0.5, 0.25, 0.0};
+  std::vector<CSI::Correspondence> links = {{0, 0, 0, 1, 2.0}, {0, 2, 0, 1, 1.0}, {0, 0, 0, 0, 3.0},
+                                            {0, 3, 0, 0, 1.0}, {0, 1, 0, 3, 1.0}};
+  std::vector<CSI::Correspondence> all = links;
+  CSI::weigh_by_support({}, all); // no support map: every link as it was
+  ASSERT_EQ(all.size(), links.size());
+  for(std::size_t i = 0; i < links.size(); ++i)
+    EXPECT_EQ(all[i].weight, links[i].weight);
+  CSI::weigh_by_support(support, links);
+  ASSERT_EQ(links.size(), 3u); // the two links of face 3 (support 0) dropped
+  EXPECT_DOUBLE_EQ(links[0].weight, 2.0 * 0.5);  // faces 0 and 1: the lower is 0.5
+  EXPECT_DOUBLE_EQ(links[1].weight, 1.0 * 0.25); // faces 2 and 1: 0.25
+  EXPECT_DOUBLE_EQ(links[2].weight, 3.0);        // face 0 with itself: 1
+  EXPECT_EQ(links[1].node_a, 2u);
+}
+
 TEST(Symmetric, SupportWeighsTheMirrorLinks)
 {
   const SAS::Labelled_triangle_mesh lm = bent_chair(2);

@@ -115,6 +115,23 @@ inline void link_samples(const Surface_sample& from, std::uint32_t mesh_from, co
   }
 }
 
+// A partial symmetry's mirror links: each counts with the lower support of its two nodes, those
+// of nodes outside the symmetry (support 0) are dropped. An empty `support` keeps them all.
+inline void weigh_by_support(const std::vector<double>& support, std::vector<Correspondence>& mirror)
+{
+  if(support.empty())
+    return;
+  std::size_t kept = 0;
+  for(const Correspondence& c : mirror) {
+    const double s = (std::min)(support[c.node_a], support[c.node_b]);
+    if(s > 0) {
+      mirror[kept] = c;
+      mirror[kept++].weight *= s;
+    }
+  }
+  mirror.resize(kept);
+}
+
 // The samples of every mesh and their search trees.
 inline void sample_meshes(const std::vector<Coseg_mesh>& meshes, const Coseg_options& o,
                           std::vector<Surface_sample>& samples, std::vector<SAI::Point_tree>& trees)
@@ -218,20 +235,7 @@ inline void link_meshes(const std::vector<Coseg_mesh>& meshes, const std::vector
     }
     std::vector<Correspondence>& mirror = links[pairs.size() + i];
     link_samples(mirrored, std::uint32_t(i), SAI::Similarity_3d(), samples[i], trees[i], std::uint32_t(i), o, mirror);
-    // A partial symmetry: each link counts with the lower support of its two faces; links of
-    // faces outside the symmetry (support 0) are dropped.
-    const std::vector<double>& support = meshes[i].mirror_support;
-    if(!support.empty()) {
-      std::size_t kept = 0;
-      for(const Correspondence& c : mirror) {
-        const double s = (std::min)(support[c.node_a], support[c.node_b]);
-        if(s > 0) {
-          mirror[kept] = c;
-          mirror[kept++].weight *= s;
-        }
-      }
-      mirror.resize(kept);
-    }
+    weigh_by_support(meshes[i].mirror_support, mirror);
   });
 }
 
