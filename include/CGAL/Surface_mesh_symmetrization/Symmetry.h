@@ -155,6 +155,14 @@ Plane_3d plane_of(const Symmetry<Kernel>& s, const std::string& who)
                                  CGAL::to_double(s.plane.c()), CGAL::to_double(s.plane.d()), who);
 }
 
+// Bad_input naming `who` when the surface has no area (or an area that is not finite).
+inline void require_area(const Surface& surface, const std::string& who)
+{
+  const double area = surface.total_area();
+  if(!(area > 0) || !std::isfinite(area))
+    throw Bad_input(who + ": the mesh has no area");
+}
+
 // A mesh read through the vertex point map and traits of `np`.
 template <typename TriangleMesh, typename NamedParameters>
 Mesh_arrays<TriangleMesh> read_mesh_np(const TriangleMesh& tm, const NamedParameters& np,
@@ -184,9 +192,7 @@ Mesh_arrays<TriangleMesh> detection_surface(const TriangleMesh& tm, const NamedP
   if(!(o.support_tolerance > 0) || !std::isfinite(o.support_tolerance))
     throw Bad_input(who + ": support_tolerance must be a positive number");
   Mesh_arrays<TriangleMesh> mesh = read_mesh_np(tm, np, who);
-  const double area = mesh.surface.total_area();
-  if(!(area > 0) || !std::isfinite(area))
-    throw Bad_input(who + ": the mesh has no area");
+  require_area(mesh.surface, who);
   return mesh;
 }
 

@@ -119,9 +119,7 @@ template <typename Kernel>
 std::vector<Mirror_point> symmetric_map(const Surface& surface, const Symmetry<Kernel>& symmetry,
                                         const Compute_symmetric_map_options& o, const std::string& who)
 {
-  const double area = surface.total_area();
-  if(!(area > 0) || !std::isfinite(area))
-    throw Bad_input(who + ": the mesh has no area");
+  require_area(surface, who);
   const Affine_3d t = affine_of(symmetry, who);
   check_plane_crosses(surface, symmetry, who);
   const Surface_index index(surface);

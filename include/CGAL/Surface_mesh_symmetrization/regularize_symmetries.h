@@ -135,9 +135,7 @@ regularize_symmetries(const TriangleMesh& tm, const SymmetryRange& symmetries,
   if(!(o.maximum_offset >= 0 && o.maximum_offset <= 1))
     throw Bad_input(who + ": maximum_offset must be in [0, 1] (a fraction of the bounding-box diagonal)");
   const internal::Mesh_arrays<TriangleMesh> mesh = internal::read_mesh_np(tm, np, who);
-  const double area = mesh.surface.total_area();
-  if(!(area > 0) || !std::isfinite(area))
-    throw Bad_input(who + ": the mesh has no area");
+  internal::require_area(mesh.surface, who);
   const internal::Vector_3d centre = mesh.surface.area_centroid();
 
   std::vector<internal::Regular_symmetry> in;

@@ -335,9 +335,7 @@ symmetrize(TriangleMesh& tm, const SymmetryRange& symmetries,
     throw Bad_input(who + ": no symmetry given");
 
   const internal::Mesh_arrays<TriangleMesh> mesh = internal::read_mesh_np(tm, np, who);
-  const double area = mesh.surface.total_area();
-  if(!(area > 0) || !std::isfinite(area))
-    throw Bad_input(who + ": the mesh has no area");
+  internal::require_area(mesh.surface, who);
   const bool weighting = o.support_weighting.value_or(n_symmetries > 1);
   internal::Symmetrizer solver(mesh.surface,
                                internal::solver_symmetries<Kernel>(mesh.surface, symmetries, weighting, who), o);

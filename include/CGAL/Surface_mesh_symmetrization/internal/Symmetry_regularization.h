@@ -79,12 +79,12 @@ inline Regular_symmetry regular_symmetry(const Affine_3d& a, bool is_reflection,
     axis = axis * -1.0;
     angle = -angle;
   }
-  // The axis' points p solve (I - L) p = t; the least-squares solution, then the one nearest `centre`.
-  Eigen::JacobiSVD<Eigen::Matrix3d> s2(Eigen::Matrix3d::Identity() - l, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  s2.setThreshold(1e-9);
   if(std::abs(SAI::dot(axis, a.translation)) > 1e-9 * (std::max)(1.0, a.translation.length()))
     return r; // a screw motion (a turn and a slide along the axis): left as it is
-  const Eigen::Vector3d p = s2.solve(Eigen::Vector3d(a.translation.x, a.translation.y, a.translation.z));
+  // The axis' points p solve (L - I) p = -t (rank 2): the least-squares solution from the same
+  // decomposition, then the one nearest `centre`.
+  svd.setThreshold(1e-9);
+  const Eigen::Vector3d p = svd.solve(Eigen::Vector3d(-a.translation.x, -a.translation.y, -a.translation.z));
   Vector_3d q(p(0), p(1), p(2));
   q = q + axis * SAI::dot(centre - q, axis);
   r.kind = Regular_symmetry::ROTATION;
