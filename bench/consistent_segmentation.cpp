@@ -23,7 +23,8 @@
 //    the meshes segmented one by one.
 //    --sweep LIST also co-segments every class with other parameters (and re-runs (a) with the
 //    new segment counts); LIST is comma-separated, each item '+'-joined settings o<n>
-//    (number_of_oversegments), a<x> (adjacency_exponent), p<n> (number_of_points), for example
+//    (number_of_oversegments), a<x> (adjacency_exponent), p<n> (number_of_points), n<n>
+//    (number_of_partners), d<x> (correspondence_distance), t<x> (normal_threshold), for example
 //    "o20,o50,a0.1,a0.3,p2000,o50+a0.1".
 //
 //   bench_consistent_segmentation [--parts chairs16,chairs100,psb] [--classes Chair,Table,...]
@@ -101,6 +102,9 @@ struct Coseg_parameters
   double adjacency = 0.1;
   std::uint64_t seed = 0; // random_seed of consistent_segmentation
   std::size_t points = 1000;
+  std::size_t partners = CS::Consistent_segmentation_options().number_of_partners;
+  double distance = CS::Consistent_segmentation_options().correspondence_distance;
+  double normals = CS::Consistent_segmentation_options().normal_threshold;
 
   Json json() const
   {
@@ -109,6 +113,9 @@ struct Coseg_parameters
     j["adjacency_exponent"] = adjacency;
     j["random_seed"] = seed;
     j["number_of_points"] = points;
+    j["number_of_partners"] = partners;
+    j["correspondence_distance"] = distance;
+    j["normal_threshold"] = normals;
     return j;
   }
 };
@@ -131,6 +138,12 @@ bool parse_setting(const std::string& item, Coseg_parameters& p)
         p.adjacency = std::stod(s.substr(1));
       else if(s[0] == 'p')
         p.points = std::stoul(s.substr(1));
+      else if(s[0] == 'n')
+        p.partners = std::stoul(s.substr(1));
+      else if(s[0] == 'd')
+        p.distance = std::stod(s.substr(1));
+      else if(s[0] == 't')
+        p.normals = std::stod(s.substr(1));
       else
         return false;
     } catch(...) {
@@ -163,6 +176,9 @@ Coseg_run run_consistent(std::vector<Mesh>& meshes, std::size_t segments, const 
                                              .adjacency_exponent(p.adjacency)
                                              .random_seed(p.seed)
                                              .number_of_points(p.points)
+                                             .number_of_partners(p.partners)
+                                             .correspondence_distance(p.distance)
+                                             .normal_threshold(p.normals)
                                              .number_of_threads(threads));
   run.seconds = seconds_since(start);
   for(std::size_t i = 0; i < meshes.size(); ++i) {

@@ -101,6 +101,15 @@ inline void write_output(const std::string& file, const SAS::Json& report)
   namespace fs = std::filesystem;
   if(file.empty())
     return;
+  std::error_code ec;
+  if(fs::exists(file, ec) && !fs::is_regular_file(file, ec)) {
+    // A device or a pipe (--output /dev/null): written in place, never replaced by a file.
+    std::ofstream out(file);
+    out << SAS::to_text(report) << '\n';
+    if(!out)
+      std::cerr << "cannot write " << file << '\n';
+    return;
+  }
   const std::string tmp = file + ".tmp";
   {
     std::ofstream out(tmp);
@@ -110,7 +119,6 @@ inline void write_output(const std::string& file, const SAS::Json& report)
       return;
     }
   }
-  std::error_code ec;
   fs::rename(tmp, file, ec);
   if(ec)
     std::cerr << "cannot rename " << tmp << " to " << file << ": " << ec.message() << '\n';

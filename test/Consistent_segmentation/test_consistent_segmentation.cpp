@@ -636,6 +636,67 @@ TEST(Symmetric, EachMirrorLinkCountsWithTheLowerSupportOfItsFaces)
   EXPECT_EQ(links[1].node_a, 2u);
 }
 
+// Samples on the surface of a box (center `c`, half extents `h`, turned by `angle` about the z
+// axis through `pivot`), uniform by area, with the faces' normals; node i is sample i.
+void sample_box(const Vector_3d& c, const Vector_3d& h, double angle, const Vector_3d& pivot, std::size_t n,
+                std::uint64_t seed, CGAL::Consistent_segmentation::internal::Surface_sample& out)
+{
+  SAS::Procedural_random rng(seed);
+  const double area[3] = {h.y * h.z, h.x * h.z, h.x * h.y};
+  const double total = area[0] + area[1] + area[2];
+  const double co = std::cos(angle), si = std::sin(angle);
+  auto turn = [&](const Vector_3d& v) { return Vector_3d(co * v.x - si * v.y, si * v.x + co * v.y, v.z); };
+  for(std::size_t k = 0; k < n; ++k) {
+    const double pick = rng.uniform() * total;
+    const int axis = pick < area[0] ? 0 : pick < area[0] + area[1] ? 1 : 2;
+    const double side = rng.uniform() < 0.5 ? -1.0 : 1.0;
+    double local[3], normal[3] = {0, 0, 0};
+    for(int a = 0; a < 3; ++a)
+      local[a] = (2 * rng.uniform() - 1) * h[a];
+    local[axis] = side * h[axis];
+    normal[axis] = side;
+    const Vector_3d p(local[0], local[1], local[2]);
+    out.points.push_back(turn(c + p - pivot) + pivot);
+    out.normals.push_back(turn(Vector_3d(normal[0], normal[1], normal[2])));
+    out.node.push_back(std::uint32_t(out.node.size()));
+  }
+  out.diagonal = 2 * (h + Vector_3d(std::abs(c.x), std::abs(c.y), std::abs(c.z))).length();
+}
+
+TEST(Articulated, EachOverSegmentIsAlignedOnItsOwn)
+{
+  namespace CSI = CGAL::Consistent_segmentation::internal;
+  // A body and an arm jointed at x = 1; the other mesh has its arm turned by `angle` about z.
+  const Vector_3d body_c(0, 0, 0), body_h(1, 0.4, 0.4), arm_c(1.8, 0, 0), arm_h(0.8, 0.15, 0.15), joint(1, 0, 0);
+  for(double degrees : {0.0, 25.0}) {
+    SCOPED_TRACE(degrees);
+    const double angle = degrees * CGAL_PI / 180;
+    CSI::Surface_sample a, b;
+    sample_box(body_c, body_h, 0, joint, 600, 1, a);
+    sample_box(arm_c, arm_h, 0, joint, 300, 2, a);
+    sample_box(body_c, body_h, 0, joint, 600, 3, b);
+    sample_box(arm_c, arm_h, angle, joint, 300, 4, b);
+    std::vector<std::size_t> part(900, 0);
+    std::fill(part.begin() + 600, part.end(), 1); // over-segment 1: the arm
+    const SAI::Closest_sample closest_b(b.points);
+    const std::vector<SAI::Similarity_3d> t = CSI::align_parts(a, part, SAI::Similarity_3d(), b, closest_b);
+    ASSERT_EQ(t.size(), 2u);
+    // The body fits as it is.
+    EXPECT_LT(SAI::rotation_angle_between(t[0].rotation, SAI::identity_matrix()), 1.5 * CGAL_PI / 180);
+    EXPECT_LT((t[0](joint) - joint).length(), 0.03);
+    // The arm turns about the joint with the other arm: its tip lands on the other tip.
+    const double co = std::cos(angle), si = std::sin(angle);
+    const Vector_3d tip(2.6, 0, 0), turned_tip = joint + Vector_3d(co, si, 0) * 1.6;
+    // (A turn about the arm's own axis, which its square section hardly fixes, does not count.)
+    const Vector_3d axis = SAI::multiply(t[1].rotation, Vector_3d(1, 0, 0));
+    EXPECT_GT(SAI::dot(axis, Vector_3d(co, si, 0)), std::cos(3 * CGAL_PI / 180));
+    EXPECT_LT((t[1](tip) - turned_tip).length(), 0.08);
+    if(degrees > 0) // the mesh alignment alone leaves the tip far from the other's
+      EXPECT_GT((tip - turned_tip).length(), 0.6);
+    EXPECT_DOUBLE_EQ(t[1].scale, 1.0);
+  }
+}
+
 TEST(Symmetric, SupportWeighsTheMirrorLinks)
 {
   const SAS::Labelled_triangle_mesh lm = bent_chair(2);

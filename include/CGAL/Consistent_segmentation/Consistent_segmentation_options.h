@@ -33,7 +33,7 @@ struct Consistent_segmentation_options : Hierarchical_segmentation_options
 {
   /// The defaults of `Hierarchical_segmentation_options`, except `number_of_segments`: 0, the
   /// number chosen from the meshes' own (on the sets of the Princeton Segmentation Benchmark's
-  /// development subset, within 0.01 of the Rand Index error that the human counts give; see the
+  /// development subset, within 0.02 of the Rand Index error that the human counts give; see the
   /// manual).
   Consistent_segmentation_options() { number_of_segments = 0; }
 

@@ -185,9 +185,12 @@ The method works in two stages on the faces of all meshes:
    than 2 `number_of_partners` + 1, the pairs of every mesh with the 2 `number_of_partners`
    meshes of most similar shape distribution, so that a mesh may also be aligned with others that
    chose it) is aligned by the similarity transform of least RMS distance between up to 400 of
-   their samples (principal frames, the 24 orientations of their axes, ICP with scale from each);
-   only the pairs that are among the `number_of_partners` best aligned (least RMS distance) of one
-   of their meshes are kept. For each kept pair, every sample is linked to the closest, among its
+   their samples (principal frames, the 24 orientations of their axes, ICP with scale from each),
+   then every over-segment of one mesh is aligned again on its own with the other mesh (rigid ICP,
+   a turn of at most 34 degrees and a shift of at most a tenth of the diagonal: parts of
+   articulated shapes at other angles); only the pairs that are among the `number_of_partners`
+   best aligned (least RMS distance) of one of their meshes are kept. For each kept pair, every
+   sample, moved by its over-segment's transform, is linked to the closest, among its
    8 nearest samples of the other mesh, whose normal agrees (dot product above
    `normal_threshold`) within `correspondence_distance` of the other mesh's bounding-box
    diagonal, in both directions. The over-segments of all meshes are then merged greedily, always

@@ -91,15 +91,18 @@ struct Correspondence
   double weight;
 };
 
-// Links every sample of `from` (moved by `t`) to the closest compatible sample of `to`.
-inline void link_samples(const Surface_sample& from, std::uint32_t mesh_from, const SAI::Similarity_3d& t,
-                         const Surface_sample& to, const SAI::Point_tree& to_tree, std::uint32_t mesh_to,
-                         const Coseg_options& o, std::vector<Correspondence>& out)
+// Links every sample of `from` (sample i moved by `transform(i)`) to the closest compatible sample
+// of `to`.
+template <typename TransformOf>
+void link_samples(const Surface_sample& from, std::uint32_t mesh_from, const TransformOf& transform,
+                  const Surface_sample& to, const SAI::Point_tree& to_tree, std::uint32_t mesh_to,
+                  const Coseg_options& o, std::vector<Correspondence>& out)
 {
   const double max_distance = o.correspondence_distance * to.diagonal;
   const double weight = 1.0 / double(from.points.size());
   std::vector<std::pair<double, std::uint32_t>> near;
   for(std::size_t i = 0; i < from.points.size(); ++i) {
+    const SAI::Similarity_3d& t = transform(i);
     const SAI::Vector_3d q = t(from.points[i]);
     const SAI::Vector_3d nq = SAI::multiply(t.rotation, from.normals[i]);
     to_tree.k_nearest(q, 8, near);
@@ -113,6 +116,60 @@ inline void link_samples(const Surface_sample& from, std::uint32_t mesh_from, co
       }
     }
   }
+}
+
+// Part-wise alignment, for articulated shapes (legs, arms, wings at other angles): a rigid
+// correction of the mesh alignment may turn an over-segment by at most this (radians, about 34
+// degrees) and move its centroid by at most this fraction of the other mesh's sample diagonal;
+// over-segments of fewer samples keep the mesh alignment.
+constexpr double max_part_turn = 0.6;
+constexpr double max_part_shift = 0.1;
+constexpr std::size_t min_part_samples = 12;
+
+// The transform of every over-segment of `from` (`part_of_node`: the over-segment of each node):
+// the alignment `t` of the whole mesh, corrected by a rigid ICP of the over-segment's samples alone
+// against the samples of the other mesh (one direction, the closest 80% of the pairs kept). A
+// correction that does not lower the trimmed RMS, turns by more than max_part_turn or moves the
+// over-segment's centroid by more than max_part_shift is not taken.
+inline std::vector<SAI::Similarity_3d>
+align_parts(const Surface_sample& from, const std::vector<std::size_t>& part_of_node, const SAI::Similarity_3d& t,
+            const Surface_sample& to, const SAI::Closest_sample& to_closest)
+{
+  std::size_t parts = 0;
+  for(std::size_t p : part_of_node)
+    parts = (std::max)(parts, p + 1);
+  std::vector<SAI::Similarity_3d> result(parts, t);
+  std::vector<std::vector<SAI::Vector_3d>> moved(parts);
+  for(std::size_t i = 0; i < from.points.size(); ++i)
+    moved[part_of_node[from.node[i]]].push_back(t(from.points[i]));
+  SAI::Icp_options io;
+  io.symmetric = false;
+  io.with_scale = false;
+  io.point_to_plane = false;
+  io.keep_fraction = 0.8;
+  io.max_iterations = 20;
+  SAI::Icp_workspace w;
+  for(std::size_t p = 0; p < parts; ++p) {
+    const std::vector<SAI::Vector_3d>& points = moved[p];
+    if(points.size() < min_part_samples)
+      continue;
+    // One direction: the source's closest-point query is not used, the target's stands in.
+    const auto icp = SAI::make_similarity_icp(points, to_closest, to.points, to_closest);
+    const SAI::Icp_result r = icp.run(SAI::Similarity_3d(), io, w);
+    const double before = icp.trimmed_rms(SAI::Similarity_3d(), io, w);
+    if(!(r.rms < before))
+      continue;
+    const double turn = SAI::rotation_angle_between(r.transform.rotation, SAI::identity_matrix());
+    SAI::Vector_3d centroid;
+    for(const SAI::Vector_3d& q : points)
+      centroid += q;
+    centroid = centroid / double(points.size());
+    const double shift = (r.transform(centroid) - centroid).length();
+    if(turn > max_part_turn || shift > max_part_shift * to.diagonal)
+      continue;
+    result[p] = r.transform.after(t);
+  }
+  return result;
 }
 
 // A partial symmetry's mirror links: each counts with the lower support of its two nodes, those
@@ -185,12 +242,15 @@ pairs_to_align(const std::vector<Surface_sample>& samples, const Coseg_options& 
   return pairs;
 }
 
-// Aligns every pair and links the samples of its meshes both ways (links[p], and the RMS of the
-// alignment relative to the second mesh's sample diagonal in pair_rms[p]); links[pairs.size() + i]
-// gets the mirror correspondences of mesh i, if it has a reflection plane.
+// Aligns every pair, corrects the alignment over-segment by over-segment (`over`: the
+// over-segment of every node of every mesh; align_parts()) and links the samples of its meshes both
+// ways (links[p], and the RMS of the mesh alignment relative to the second mesh's sample diagonal
+// in pair_rms[p]); links[pairs.size() + i] gets the mirror correspondences of mesh i, if it has a
+// reflection plane.
 inline void link_meshes(const std::vector<Coseg_mesh>& meshes, const std::vector<Surface_sample>& samples,
                         const std::vector<SAI::Point_tree>& trees,
                         const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
+                        const std::vector<std::vector<std::size_t>>& over,
                         const Coseg_options& o, std::vector<std::vector<Correspondence>>& links,
                         std::vector<double>& pair_rms)
 {
@@ -212,12 +272,19 @@ inline void link_meshes(const std::vector<Coseg_mesh>& meshes, const std::vector
     prefix[i].assign(samples[i].points.begin(),
                      samples[i].points.begin() + std::ptrdiff_t((std::min)(aligned_points, samples[i].points.size())));
   SAI::Parallel_workspaces<char> workers(o.number_of_threads);
+  std::vector<SAI::Closest_sample> closest(m);
+  workers.for_each(0, m, [&](std::size_t i, char&) { closest[i] = SAI::Closest_sample(samples[i].points); });
   workers.for_each(0, pairs.size(), [&](std::size_t p, char&) {
     const std::uint32_t a = pairs[p].first, b = pairs[p].second;
     const SAI::Restart_alignment_result r = SAI::align_with_restarts(prefix[a], prefix[b], ao);
     pair_rms[p] = samples[b].diagonal > 0 ? r.rms / samples[b].diagonal : 0.0;
-    link_samples(samples[a], a, r.transform, samples[b], trees[b], b, o, links[p]);
-    link_samples(samples[b], b, r.transform.inverse(), samples[a], trees[a], a, o, links[p]);
+    const SAI::Similarity_3d back = r.transform.inverse();
+    const std::vector<SAI::Similarity_3d> ta = align_parts(samples[a], over[a], r.transform, samples[b], closest[b]);
+    const std::vector<SAI::Similarity_3d> tb = align_parts(samples[b], over[b], back, samples[a], closest[a]);
+    link_samples(samples[a], a, [&](std::size_t i) -> const SAI::Similarity_3d& { return ta[over[a][samples[a].node[i]]]; },
+                 samples[b], trees[b], b, o, links[p]);
+    link_samples(samples[b], b, [&](std::size_t i) -> const SAI::Similarity_3d& { return tb[over[b][samples[b].node[i]]]; },
+                 samples[a], trees[a], a, o, links[p]);
   });
   workers.for_each(0, m, [&](std::size_t i, char&) {
     if(!meshes[i].has_plane)
@@ -234,7 +301,9 @@ inline void link_meshes(const std::vector<Coseg_mesh>& meshes, const std::vector
       mirrored.normals[k] = q - nn * (2 * SAI::dot(nn, q));
     }
     std::vector<Correspondence>& mirror = links[pairs.size() + i];
-    link_samples(mirrored, std::uint32_t(i), SAI::Similarity_3d(), samples[i], trees[i], std::uint32_t(i), o, mirror);
+    const SAI::Similarity_3d identity;
+    link_samples(mirrored, std::uint32_t(i), [&](std::size_t) -> const SAI::Similarity_3d& { return identity; },
+                 samples[i], trees[i], std::uint32_t(i), o, mirror);
     weigh_by_support(meshes[i].mirror_support, mirror);
   });
 }

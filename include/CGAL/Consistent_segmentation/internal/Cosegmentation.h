@@ -10,7 +10,9 @@
 //     never mixed with another known label);
 //  2. points are sampled on every mesh; pairs of meshes (all of them, or each mesh with the
 //     partners whose shape distributions are closest) are aligned by a similarity transform
-//     (principal frames, 24 axis orientations, ICP with scale); each sample is linked to the
+//     (principal frames, 24 axis orientations, ICP with scale), then each over-segment of stage
+//     one is aligned again on its own by a bounded rigid ICP (articulated parts: legs, arms and
+//     wings at other angles); each sample, moved by its over-segment's transform, is linked to the
 //     closest sample of the other mesh whose normal agrees (dot product above a threshold) within
 //     a distance, in both directions; with a reflection plane, samples of a mesh are linked to
 //     their mirror images in the same mesh;
@@ -297,7 +299,7 @@ inline Coseg_result cosegment(std::vector<Coseg_mesh>& meshes, const Coseg_optio
   const std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs = pairs_to_align(samples, o);
   std::vector<std::vector<Correspondence>> links;
   std::vector<double> pair_rms;
-  link_meshes(meshes, samples, trees, pairs, o, links, pair_rms);
+  link_meshes(meshes, samples, trees, pairs, over, o, links, pair_rms);
   keep_best_partners(m, pairs, pair_rms, o.number_of_partners, links);
   report(0.6);
   result.number_of_aligned_pairs = pairs.size();
