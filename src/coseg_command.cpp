@@ -2,13 +2,14 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
 // shape_analysis coseg IN1 IN2 ... --segments K --oversegments k --output-dir DIR --report R.json
-//   [--known MESH=FILE.seg ...] [--prior MESH=FILE.seg ...]
+//   [--known MESH=FILE.seg ...] [--prior MESH=FILE.seg ...] [--merge-repeated]
 // shape_analysis coseg IN --symmetry-plane a,b,c,d | --symmetric --output-dir DIR
 
 #include "cli_common.h"
 
 #include <CGAL/Consistent_segmentation/Consistent_segmentation_options.h>
 #include <CGAL/Consistent_segmentation/consistent_segmentation.h>
+#include <CGAL/Consistent_segmentation/merge_repeated_segments.h>
 #include <CGAL/Surface_mesh_symmetrization/detect_reflective_symmetries.h>
 
 #include <algorithm>
@@ -37,6 +38,7 @@ struct Coseg_command_options
   bool detect_plane = false;              // --symmetric: the plane detected
   CS::Consistent_segmentation_options coseg;
   bool no_refinement = false;
+  bool merge_repeated = false;            // --merge-repeated: merge_repeated_segments() after
   bool quiet = false;
   bool verbose = false;
 };
@@ -355,6 +357,14 @@ int run_coseg(const Coseg_command_options& o)
     r = CS::consistent_segmentation(meshes, segment_maps, np.prior_segment_maps(prior_maps));
   else
     r = CS::consistent_segmentation(meshes, segment_maps, np);
+  // Parts repeated within the meshes (legs): one id per kind of part.
+  std::size_t merged_ids = 0;
+  const CS::Merge_repeated_segments_options merge_options;
+  if(o.merge_repeated) {
+    progress.stage("merging the ids of repeated parts");
+    merged_ids = CS::merge_repeated_segments(
+      meshes, segment_maps, r, CS::parameters::random_seed(co.random_seed).number_of_threads(co.number_of_threads));
+  }
   const double segment_seconds = segmenting.seconds();
   progress.done();
 
@@ -419,6 +429,13 @@ int run_coseg(const Coseg_command_options& o)
       report["seconds_detection"] = detection_seconds;
     }
     report["parameters"] = parameters;
+    Json merged = Json();
+    if(o.merge_repeated) {
+      merged = Json::object();
+      merged["duplicate_tolerance"] = merge_options.duplicate_tolerance;
+      merged["ids_merged"] = merged_ids;
+    }
+    report["merge_repeated"] = merged;
     report["segments"] = r.number_of_segments;
     report["meshes_of_segment"] = r.meshes_of_segment;
     report["segment_area"] = r.segment_area;
@@ -513,6 +530,9 @@ void add_coseg_command(CLI::App& app, std::function<int()>& run,
                   "Cost of a component link relative to the mean edge cut cost")
     ->capture_default_str();
   cmd->add_flag("--no-refinement", options->no_refinement, "Skip the boundary refinement");
+  cmd->add_flag("--merge-repeated", options->merge_repeated,
+                "Then give one id to the segments that are copies of one part within the meshes "
+                "(the legs of a chair, its armrests; merge_repeated_segments())");
   cmd->add_option("--seed", co.random_seed, "Random seed (same seed, same result)")->capture_default_str();
   cmd->add_option("--threads", co.number_of_threads, "Largest number of threads (0: all cores)")
     ->capture_default_str();

@@ -1,11 +1,13 @@
 // Segments a set of meshes consistently (the same id for the same part in every mesh), prints
-// which segments occur in which mesh, then labels one more mesh from the segmented set.
+// which segments occur in which mesh and which of them are copies of one part within the meshes
+// (merge_repeated_segments(): the legs), then labels one more mesh from the segmented set.
 //   consistent_segmentation [number_of_segments] mesh1.off mesh2.off ... [--new new_mesh.off]
 // Without mesh files: CGAL's cow, bull and elephant, with camel as the new mesh.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Consistent_segmentation/consistent_segmentation.h>
+#include <CGAL/Consistent_segmentation/merge_repeated_segments.h>
 
 #include <cstdlib>
 #include <iostream>
@@ -70,6 +72,21 @@ int main(int argc, char** argv)
         std::cout << ' ' << m;
       std::cout << '\n';
     }
+
+    // Parts repeated within each mesh (four legs) get one id per place above; one id per kind of
+    // part instead, in maps of their own (merge_repeated_segments() rewrites the maps it gets).
+    std::vector<Segment_map> kinds;
+    for(std::size_t i = 0; i < meshes.size(); ++i) {
+      kinds.push_back(meshes[i].add_property_map<face_descriptor, std::size_t>("f:kind", 0).first);
+      for(face_descriptor f : faces(meshes[i]))
+        kinds[i][f] = segments[i][f];
+    }
+    CS::Consistent_segmentation_result merged = result;
+    const std::size_t removed = CS::merge_repeated_segments(meshes, kinds, merged);
+    std::cout << "repeated parts: " << result.number_of_segments << " ids become " << merged.number_of_segments
+              << " (" << removed << " merged)\n";
+    for(std::size_t s = 0; s < merged.number_of_segments; ++s)
+      std::cout << "  kind " << s << ": area " << merged.segment_area[s] << '\n';
 
     if(new_file.empty())
       return EXIT_SUCCESS;

@@ -5,7 +5,9 @@
 // (one example labels a set, a labelled set labels a new mesh, half-labelled meshes are
 // completed); the symmetric mode gives mirror faces the same id; the result does not depend on
 // the number of threads; CGAL's meshes of different animals are split into real parts, not into one
-// segment and scraps; bad input is refused with Bad_input without touching the output maps.
+// segment and scraps; bad input is refused with Bad_input without touching the output maps; each
+// over-segment's own alignment follows an articulated part; merge_repeated_segments() gives the
+// legs of the chairs one id and their armrests another.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
@@ -17,6 +19,7 @@
 #include <CGAL/Consistent_segmentation/Consistent_segmentation_options.h>
 #include <CGAL/Consistent_segmentation/consistent_segmentation.h>
 #include <CGAL/Consistent_segmentation/hierarchical_segmentation.h>
+#include <CGAL/Consistent_segmentation/merge_repeated_segments.h>
 #include <Shape_analysis_support/Procedural_furniture.h>
 
 #include <gtest/gtest.h>
@@ -792,6 +795,110 @@ TEST(Symmetric, PlaneInAnyPose)
 
 // ---------------------------------------------------------------------------------------------
 // Other mesh types and maps
+
+// ---------------------------------------------------------------------------------------------
+// Repeated parts within the meshes
+
+// Per label, the fraction of its area (each model counting as 1) that carries the label's most
+// common id, and that id.
+std::pair<double, std::size_t> dominant_id(const std::vector<SAS::Furniture_model>& models,
+                                           const std::vector<std::vector<std::size_t>>& ids, std::size_t label)
+{
+  std::map<std::size_t, double> by_id;
+  double total = 0;
+  for(std::size_t i = 0; i < models.size(); ++i) {
+    const SAS::Labelled_triangle_mesh& m = models[i].mesh;
+    double mesh_area = 0;
+    for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+      mesh_area += m.area(f);
+    for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+      if(m.labels[f] == label) {
+        by_id[ids[i][f]] += m.area(f) / mesh_area;
+        total += m.area(f) / mesh_area;
+      }
+  }
+  std::pair<double, std::size_t> best(0.0, unset);
+  for(const auto& kv : by_id)
+    if(kv.second > best.first)
+      best = std::make_pair(kv.second, kv.first);
+  best.first = total > 0 ? best.first / total : 0.0;
+  return best;
+}
+
+TEST(Repeated, ChairLegsAndArmrestsGetOneIdEach)
+{
+  const std::vector<SAS::Furniture_model> models = SAS::procedural_chair_set(8, 3, furniture(true, 1.0));
+  std::vector<Mesh> meshes = to_meshes(models);
+  std::vector<Id_map> maps = id_maps(meshes);
+  CS::Consistent_segmentation_result r =
+    CS::consistent_segmentation(meshes, maps, CS::parameters::number_of_segments(8).random_seed(1));
+  const std::vector<std::vector<std::size_t>> before = read_ids(meshes, maps);
+  // One id per leg place before: the legs' most common id covers about a quarter of their area.
+  EXPECT_LT(dominant_id(models, before, SAS::LEG).first, 0.5);
+  const double accuracy_before = SAS::furniture_label_accuracy(models, before);
+
+  std::vector<Mesh> copies = meshes;
+  std::vector<Id_map> copy_maps;
+  for(Mesh& m : copies)
+    copy_maps.push_back(m.property_map<face_descriptor, std::size_t>("f:coseg_id").first);
+  CS::Consistent_segmentation_result r1 = r;
+  const std::size_t removed = CS::merge_repeated_segments(meshes, maps, r, CS::parameters::number_of_threads(2));
+  const std::vector<std::vector<std::size_t>> after = read_ids(meshes, maps);
+  expect_consistent_result(after, r);
+  EXPECT_EQ(removed + r.number_of_segments, 8u);
+  EXPECT_GE(removed, 3u); // four leg ids become one, two armrest ids one
+  const auto legs = dominant_id(models, after, SAS::LEG);
+  const auto arms = dominant_id(models, after, SAS::ARMREST);
+  const auto seat = dominant_id(models, after, SAS::SEAT);
+  const auto back = dominant_id(models, after, SAS::BACK);
+  EXPECT_GE(legs.first, 0.95);
+  EXPECT_GE(arms.first, 0.95);
+  // Different kinds of parts are not merged: seat, back, legs and armrests keep apart, and the
+  // ids still match the labels as well as before.
+  const std::set<std::size_t> kinds = {legs.second, arms.second, seat.second, back.second};
+  EXPECT_EQ(kinds.size(), 4u);
+  EXPECT_GE(SAS::furniture_label_accuracy(models, after), accuracy_before - 1e-9);
+
+  // One thread gives the same ids.
+  CS::merge_repeated_segments(copies, copy_maps, r1, CS::parameters::number_of_threads(1));
+  EXPECT_EQ(read_ids(copies, copy_maps), after);
+  EXPECT_EQ(r1.number_of_segments, r.number_of_segments);
+  EXPECT_EQ(r1.meshes_of_segment, r.meshes_of_segment);
+}
+
+TEST(Repeated, KnownLabelsAndBadInput)
+{
+  const std::vector<SAS::Furniture_model> models = SAS::procedural_chair_set(4, 3, furniture(false, 0.0));
+  std::vector<Mesh> meshes = to_meshes(models);
+  std::vector<Id_map> maps = id_maps(meshes);
+  CS::Consistent_segmentation_result r =
+    CS::consistent_segmentation(meshes, maps, CS::parameters::number_of_segments(6).random_seed(1));
+  const std::vector<std::vector<std::size_t>> ids = read_ids(meshes, maps);
+  // Ids that carry known labels are never merged.
+  CS::Consistent_segmentation_result labelled = r;
+  for(std::size_t s = 0; s < labelled.number_of_segments; ++s)
+    labelled.segment_label[s] = static_cast<long long>(s);
+  EXPECT_EQ(CS::merge_repeated_segments(meshes, maps, labelled), 0u);
+  EXPECT_EQ(read_ids(meshes, maps), ids);
+  // Bad input: nothing written, the result unchanged.
+  CS::Consistent_segmentation_result copy = r;
+  EXPECT_THROW(CS::merge_repeated_segments(meshes, maps, copy, CS::parameters::duplicate_tolerance(2.0)), CS::Bad_input);
+  EXPECT_THROW(CS::merge_repeated_segments(meshes, maps, copy, CS::parameters::number_of_points(3)), CS::Bad_input);
+  std::vector<Id_map> fewer(maps.begin(), maps.end() - 1);
+  EXPECT_THROW(CS::merge_repeated_segments(meshes, fewer, copy), CS::Bad_input);
+  CS::Consistent_segmentation_result short_result = r;
+  short_result.segment_area.pop_back();
+  EXPECT_THROW(CS::merge_repeated_segments(meshes, maps, short_result), CS::Bad_input);
+  maps[2][*faces(meshes[2]).begin()] = r.number_of_segments; // an id the result does not have
+  EXPECT_THROW(CS::merge_repeated_segments(meshes, maps, copy), CS::Bad_input);
+  maps[2][*faces(meshes[2]).begin()] = ids[2][0];
+  EXPECT_EQ(read_ids(meshes, maps), ids);
+  EXPECT_EQ(copy.number_of_segments, r.number_of_segments);
+  EXPECT_EQ(copy.meshes_of_segment, r.meshes_of_segment);
+  std::vector<Mesh> none;
+  std::vector<Id_map> no_maps;
+  EXPECT_THROW(CS::merge_repeated_segments(none, no_maps, copy), CS::Bad_input);
+}
 
 TEST(Parameters, PolyhedronAndVertexPointMaps)
 {
