@@ -698,6 +698,26 @@ TEST(Articulated, EachOverSegmentIsAlignedOnItsOwn)
       EXPECT_GT((tip - turned_tip).length(), 0.6);
     EXPECT_DOUBLE_EQ(t[1].scale, 1.0);
   }
+  // Limits: an arm turned by 60 degrees is corrected by at most 0.6 radians; an over-segment of
+  // fewer than 12 samples keeps the mesh alignment exactly.
+  CSI::Surface_sample a, b;
+  sample_box(body_c, body_h, 0, joint, 600, 1, a);
+  sample_box(arm_c, arm_h, 0, joint, 300, 2, a);
+  sample_box(body_c, body_h, 0, joint, 600, 3, b);
+  sample_box(arm_c, arm_h, CGAL_PI / 3, joint, 300, 4, b);
+  std::vector<std::size_t> part(900, 0);
+  std::fill(part.begin() + 600, part.end(), 1);
+  const SAI::Closest_sample closest_b(b.points);
+  SAI::Similarity_3d shifted;
+  shifted.translation = Vector_3d(0.01, 0, 0);
+  const std::vector<SAI::Similarity_3d> t = CSI::align_parts(a, part, shifted, b, closest_b);
+  EXPECT_LE(SAI::rotation_angle_between(t[1].rotation, SAI::identity_matrix()), CSI::max_part_turn + 1e-12);
+  std::fill(part.begin() + 600, part.end(), 2);
+  std::fill(part.begin() + 889, part.end(), 1); // over-segment 1: 11 samples of the arm's end
+  const std::vector<SAI::Similarity_3d> u = CSI::align_parts(a, part, shifted, b, closest_b);
+  ASSERT_EQ(u.size(), 3u);
+  EXPECT_EQ(u[1].translation.x, shifted.translation.x);
+  EXPECT_EQ(SAI::rotation_angle_between(u[1].rotation, SAI::identity_matrix()), 0.0);
 }
 
 TEST(Symmetric, SupportWeighsTheMirrorLinks)
@@ -825,6 +845,14 @@ std::pair<double, std::size_t> dominant_id(const std::vector<SAS::Furniture_mode
   return best;
 }
 
+std::size_t distinct_ids(const std::vector<std::vector<std::size_t>>& ids)
+{
+  std::set<std::size_t> all;
+  for(const auto& mesh : ids)
+    all.insert(mesh.begin(), mesh.end());
+  return all.size();
+}
+
 TEST(Repeated, ChairLegsAndArmrestsGetOneIdEach)
 {
   const std::vector<SAS::Furniture_model> models = SAS::procedural_chair_set(8, 3, furniture(true, 1.0));
@@ -845,8 +873,8 @@ TEST(Repeated, ChairLegsAndArmrestsGetOneIdEach)
   const std::size_t removed = CS::merge_repeated_segments(meshes, maps, r, CS::parameters::number_of_threads(2));
   const std::vector<std::vector<std::size_t>> after = read_ids(meshes, maps);
   expect_consistent_result(after, r);
-  EXPECT_EQ(removed + r.number_of_segments, 8u);
-  EXPECT_GE(removed, 3u); // four leg ids become one, two armrest ids one
+  EXPECT_EQ(removed, distinct_ids(before) - distinct_ids(after));
+  EXPECT_EQ(removed, 4u); // four leg ids become one, two armrest ids one
   const auto legs = dominant_id(models, after, SAS::LEG);
   const auto arms = dominant_id(models, after, SAS::ARMREST);
   const auto seat = dominant_id(models, after, SAS::SEAT);
@@ -864,6 +892,53 @@ TEST(Repeated, ChairLegsAndArmrestsGetOneIdEach)
   EXPECT_EQ(read_ids(copies, copy_maps), after);
   EXPECT_EQ(r1.number_of_segments, r.number_of_segments);
   EXPECT_EQ(r1.meshes_of_segment, r.meshes_of_segment);
+}
+
+// Known labels 0 and 5 (a seat and a back): ids 1 to 4 are unused, the other parts follow from 6.
+// The labels keep their ids, the unused ids stay unused, the legs' ids merge after the labels.
+TEST(Repeated, LabelsWithGapsKeepTheirIds)
+{
+  const std::vector<SAS::Furniture_model> models = SAS::procedural_chair_set(6, 3, furniture(true, 0.0));
+  std::vector<Mesh> meshes = to_meshes(models);
+  std::vector<Id_map> maps = id_maps(meshes);
+  std::vector<Label_map> known;
+  for(std::size_t i = 0; i < meshes.size(); ++i) {
+    known.push_back(meshes[i].add_property_map<face_descriptor, long long>("f:known", -1).first);
+    if(i == 0) {
+      std::size_t f = 0;
+      for(auto fd : faces(meshes[0])) {
+        const std::size_t label = models[0].mesh.labels[f++];
+        known[0][fd] = label == SAS::SEAT ? 0 : label == SAS::BACK ? 5 : -1;
+      }
+    }
+  }
+  CS::Consistent_segmentation_result r = CS::consistent_segmentation(
+    meshes, maps, CS::parameters::number_of_segments(8).known_segment_maps(known).random_seed(1));
+  ASSERT_EQ(r.segment_label[0], 0);
+  ASSERT_EQ(r.segment_label[5], 5);
+  for(std::size_t s = 1; s < 5; ++s)
+    ASSERT_TRUE(r.meshes_of_segment[s].empty());
+  const std::vector<std::vector<std::size_t>> before = read_ids(meshes, maps);
+  const std::size_t removed = CS::merge_repeated_segments(meshes, maps, r);
+  const std::vector<std::vector<std::size_t>> after = read_ids(meshes, maps);
+  EXPECT_EQ(removed, distinct_ids(before) - distinct_ids(after));
+  EXPECT_GE(removed, 3u); // the four leg ids
+  EXPECT_EQ(r.number_of_segments, 6 + (distinct_ids(after) - 2));
+  EXPECT_EQ(r.segment_label[0], 0);
+  EXPECT_EQ(r.segment_label[5], 5);
+  for(std::size_t s = 1; s < 5; ++s)
+    EXPECT_TRUE(r.meshes_of_segment[s].empty());
+  for(std::size_t i = 0; i < meshes.size(); ++i)
+    for(std::size_t f = 0; f < after[i].size(); ++f) {
+      ASSERT_LT(after[i][f], r.number_of_segments);
+      if(before[i][f] == 0 || before[i][f] == 5)
+        EXPECT_EQ(after[i][f], before[i][f]);
+      else
+        EXPECT_GE(after[i][f], 6u);
+    }
+  // Merged leg ids: the legs' most common id covers more of them than before.
+  EXPECT_GT(dominant_id(models, after, SAS::LEG).first, dominant_id(models, before, SAS::LEG).first + 0.2)
+    << dominant_id(models, before, SAS::LEG).first;
 }
 
 TEST(Repeated, KnownLabelsAndBadInput)
@@ -886,6 +961,9 @@ TEST(Repeated, KnownLabelsAndBadInput)
   EXPECT_THROW(CS::merge_repeated_segments(meshes, maps, copy, CS::parameters::number_of_points(3)), CS::Bad_input);
   std::vector<Id_map> fewer(maps.begin(), maps.end() - 1);
   EXPECT_THROW(CS::merge_repeated_segments(meshes, fewer, copy), CS::Bad_input);
+  CS::Consistent_segmentation_result wrong_label = r;
+  wrong_label.segment_label[1] = 0; // a labelled segment's id is its label
+  EXPECT_THROW(CS::merge_repeated_segments(meshes, maps, wrong_label), CS::Bad_input);
   CS::Consistent_segmentation_result short_result = r;
   short_result.segment_area.pop_back();
   EXPECT_THROW(CS::merge_repeated_segments(meshes, maps, short_result), CS::Bad_input);

@@ -41,9 +41,11 @@ struct Merge_repeated_segments_options
   /// two regions are copies of each other when, after the best rigid motion (with or without a
   /// reflection), the RMS distance between their surfaces is at most this fraction of the RMS
   /// radius of one of them, in \f$[0, 1]\f$. The legs of the Princeton benchmark's chairs and
-  /// tables are within about 0.03 of each other, a chair's seat and back 0.04 to 0.08 apart
+  /// tables are mostly within 0.03 of each other; the seat and the back of most procedural chairs
+  /// 0.04 to 0.08 apart
   double duplicate_tolerance = 0.03;
-  /// the number of points sampled on each region compared (at least 10)
+  /// the number of points sampled on each region compared (at least 10; not the default of
+  /// `consistent_segmentation()`'s parameter of the same name)
   std::size_t number_of_points = 150;
   /// the seed of the random numbers (sample points)
   std::uint64_t random_seed = 0;
@@ -118,11 +120,14 @@ gives a part that a set shares the same id in every mesh, but a part repeated wi
 gets one id per place (front left leg, front right leg, ...), since aligning two meshes matches
 places, not kinds. Two ids are merged when, in at least half of the meshes that have both (at most
 the first six such meshes are compared), their regions have areas within 25% of each other and one
-region, moved by the best rigid motion with or without a reflection, lies on the other within
-`duplicate_tolerance`: mirror images (left and right) and copies (front and back) alike. Merged
+region, moved by the best rigid motion with or without a reflection, lies on the other: the RMS
+distance between the two surfaces (the closest 90% of the point pairs, both ways) at most
+`duplicate_tolerance` of the RMS radius of the region of the lower id. Mirror images (left and
+right) and copies (front and back) alike. Merged
 groups take the place of their first id; ids are then renumbered without gaps, in their order.
 Ids with a known label (`Consistent_segmentation_result::segment_label`) are never merged and
-keep their values.
+keep their values, as do the ids between them that no face carries; the other ids follow the
+largest label.
 
 \tparam MeshRange a range of models of `FaceListGraph`, as for `consistent_segmentation()`
 \tparam FaceSegmentMapRange a range of models of `ReadWritePropertyMap` with the meshes'
@@ -140,12 +145,15 @@ keep their values.
 \cgalNamedParamsBegin
   \cgalParamNBegin{duplicate_tolerance}
     \cgalParamDescription{the largest RMS distance between the surfaces of two copies of one part,
-      after alignment, as a fraction of the RMS radius of one of them, in \f$[0, 1]\f$}
+      after alignment (the closest 90% of the point pairs), as a fraction of the RMS radius of one
+      of them, in \f$[0, 1]\f$}
     \cgalParamType{`double`}
     \cgalParamDefault{`Merge_repeated_segments_options::duplicate_tolerance`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_points}
-    \cgalParamDescription{the number of points sampled on each region compared (at least 10)}
+    \cgalParamDescription{the number of points sampled on each region compared (at least 10); its
+      default differs from `consistent_segmentation()`'s, so a chain of named parameters that sets
+      it for one function should not be passed to the other}
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{`Merge_repeated_segments_options::number_of_points`}
   \cgalParamNEnd
@@ -168,11 +176,13 @@ keep their values.
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns the number of ids removed (0 when no two segments repeat each other)
+\returns the number of ids merged into others: the ids without a known label that faces carry,
+         before minus after (0 when no two segments repeat each other)
 
 \throws CGAL::Shape_analysis::Bad_input if `meshes` is empty, if the number of face segment maps
         (or of vertex point maps) differs from the number of meshes, if the tables of `result` do
-        not have `result.number_of_segments` entries, if a face's id is not below
+        not have `result.number_of_segments` entries or a segment's known label is not its id,
+        if a face's id is not below
         `result.number_of_segments`, if a mesh has no faces, a face that is not a triangle or a
         coordinate that is not finite, or if a parameter is out of its range; no map is written
         and `result` is not changed then.
@@ -197,6 +207,10 @@ std::size_t merge_repeated_segments(const MeshRange& meshes, const FaceSegmentMa
   const std::size_t k = result.number_of_segments;
   if(result.meshes_of_segment.size() != k || result.segment_area.size() != k || result.segment_label.size() != k)
     throw Bad_input(who + ": the result's tables do not have one entry per segment (" + std::to_string(k) + ")");
+  for(std::size_t s = 0; s < k; ++s)
+    if(result.segment_label[s] >= 0 && result.segment_label[s] != static_cast<long long>(s))
+      throw Bad_input(who + ": segment " + std::to_string(s) + " carries the known label " +
+                      std::to_string(result.segment_label[s]) + ": a labelled segment's id is its label");
   const Merge_repeated_segments_options options = merge_repeated_segments_options(np);
   if(!(options.duplicate_tolerance >= 0 && options.duplicate_tolerance <= 1))
     throw Bad_input(who + ": duplicate_tolerance must be in [0, 1]");
@@ -228,24 +242,28 @@ std::size_t merge_repeated_segments(const MeshRange& meshes, const FaceSegmentMa
   ro.number_of_threads = options.number_of_threads;
   const std::vector<std::size_t> group = internal::repeated_segment_groups(data, k, result.segment_label, ro);
 
-  // New ids: labelled ids keep their values; the groups follow the largest label, in the order of
-  // their first id.
+  // New ids: labelled ids keep their values (and so do the unused ids between them, as
+  // consistent_segmentation() leaves them); the groups of the other ids follow the largest label,
+  // in the order of their first id; unused ids above the largest label are dropped.
   long long largest_label = -1;
   for(long long l : result.segment_label)
     largest_label = (std::max)(largest_label, l);
-  std::vector<std::size_t> new_id(k);
-  std::size_t next = static_cast<std::size_t>(largest_label + 1);
+  const std::size_t first_free = static_cast<std::size_t>(largest_label + 1);
+  std::vector<char> used(k, 0);
+  for(const internal::Segmented_triangles& mesh : data)
+    for(std::size_t id : mesh.ids)
+      used[id] = 1;
+  std::vector<std::size_t> new_id(k, 0);
+  std::size_t next = first_free, unlabelled = 0;
   for(std::size_t s = 0; s < k; ++s) {
-    if(result.segment_label[s] >= 0)
-      new_id[s] = static_cast<std::size_t>(result.segment_label[s]);
-    else if(group[s] == s)
-      new_id[s] = next++;
-    else
-      new_id[s] = new_id[group[s]];
+    if(result.segment_label[s] >= 0 || (!used[s] && s < first_free))
+      new_id[s] = s;
+    else if(used[s]) {
+      ++unlabelled;
+      new_id[s] = group[s] == s ? next++ : new_id[group[s]];
+    }
   }
-  std::size_t total = 0;
-  for(std::size_t s = 0; s < k; ++s)
-    total = (std::max)(total, new_id[s] + 1);
+  const std::size_t total = (std::max)(first_free, next);
 
   Consistent_segmentation_result merged = result;
   merged.number_of_segments = total;
@@ -253,6 +271,8 @@ std::size_t merge_repeated_segments(const MeshRange& meshes, const FaceSegmentMa
   merged.segment_area.assign(total, 0.0);
   merged.segment_label.assign(total, -1);
   for(std::size_t s = 0; s < k; ++s) {
+    if(!used[s] && s >= first_free)
+      continue; // dropped
     const std::size_t t = new_id[s];
     merged.segment_area[t] += result.segment_area[s];
     merged.segment_label[t] = result.segment_label[s];
@@ -269,7 +289,7 @@ std::size_t merge_repeated_segments(const MeshRange& meshes, const FaceSegmentMa
     for(auto f : CGAL::faces(tm))
       put(map, f, new_id[static_cast<std::size_t>(get(map, f))]);
   }
-  const std::size_t removed = k - total;
+  const std::size_t removed = unlabelled - (next - first_free);
   result = std::move(merged);
   return removed;
 }

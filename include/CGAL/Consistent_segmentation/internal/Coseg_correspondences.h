@@ -155,10 +155,8 @@ align_parts(const Surface_sample& from, const std::vector<std::size_t>& part_of_
       continue;
     // One direction: the source's closest-point query is not used, the target's stands in.
     const auto icp = SAI::make_similarity_icp(points, to_closest, to.points, to_closest);
+    // run() keeps the identity unless a step lowers the trimmed RMS.
     const SAI::Icp_result r = icp.run(SAI::Similarity_3d(), io, w);
-    const double before = icp.trimmed_rms(SAI::Similarity_3d(), io, w);
-    if(!(r.rms < before))
-      continue;
     const double turn = SAI::rotation_angle_between(r.transform.rotation, SAI::identity_matrix());
     SAI::Vector_3d centroid;
     for(const SAI::Vector_3d& q : points)
@@ -242,11 +240,33 @@ pairs_to_align(const std::vector<Surface_sample>& samples, const Coseg_options& 
   return pairs;
 }
 
-// Aligns every pair, corrects the alignment over-segment by over-segment (`over`: the
-// over-segment of every node of every mesh; align_parts()) and links the samples of its meshes both
-// ways (links[p], and the RMS of the mesh alignment relative to the second mesh's sample diagonal
-// in pair_rms[p]); links[pairs.size() + i] gets the mirror correspondences of mesh i, if it has a
-// reflection plane.
+// Only the pairs among the `number_of_partners` best aligned of one of their meshes keep their
+// links: a poor alignment (other poses, other proportions) gives misleading correspondences.
+// Returns a flag per pair (all set when number_of_partners is 0).
+inline std::vector<char> best_partners(std::size_t m, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
+                                       const std::vector<double>& pair_rms, std::size_t number_of_partners)
+{
+  if(number_of_partners == 0)
+    return std::vector<char>(pairs.size(), 1);
+  std::vector<std::vector<std::pair<double, std::size_t>>> of_mesh(m);
+  for(std::size_t p = 0; p < pairs.size(); ++p) {
+    of_mesh[pairs[p].first].emplace_back(pair_rms[p], p);
+    of_mesh[pairs[p].second].emplace_back(pair_rms[p], p);
+  }
+  std::vector<char> keep(pairs.size(), 0);
+  for(auto& list : of_mesh) {
+    std::sort(list.begin(), list.end());
+    for(std::size_t k = 0; k < number_of_partners && k < list.size(); ++k)
+      keep[list[k].second] = 1;
+  }
+  return keep;
+}
+
+// Aligns every pair (the RMS of the alignment relative to the second mesh's sample diagonal in
+// pair_rms[p]); for the pairs that best_partners() keeps, corrects the alignment over-segment by
+// over-segment (`over`: the over-segment of every node of every mesh; align_parts()) and links the
+// samples of the two meshes both ways (links[p]; empty for the other pairs); links[pairs.size() + i]
+// gets the mirror correspondences of mesh i, if it has a reflection plane.
 inline void link_meshes(const std::vector<Coseg_mesh>& meshes, const std::vector<Surface_sample>& samples,
                         const std::vector<SAI::Point_tree>& trees,
                         const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
@@ -274,12 +294,20 @@ inline void link_meshes(const std::vector<Coseg_mesh>& meshes, const std::vector
   SAI::Parallel_workspaces<char> workers(o.number_of_threads);
   std::vector<SAI::Closest_sample> closest(m);
   workers.for_each(0, m, [&](std::size_t i, char&) { closest[i] = SAI::Closest_sample(samples[i].points); });
+  std::vector<SAI::Similarity_3d> transform(pairs.size());
   workers.for_each(0, pairs.size(), [&](std::size_t p, char&) {
     const std::uint32_t a = pairs[p].first, b = pairs[p].second;
     const SAI::Restart_alignment_result r = SAI::align_with_restarts(prefix[a], prefix[b], ao);
     pair_rms[p] = samples[b].diagonal > 0 ? r.rms / samples[b].diagonal : 0.0;
-    const SAI::Similarity_3d back = r.transform.inverse();
-    const std::vector<SAI::Similarity_3d> ta = align_parts(samples[a], over[a], r.transform, samples[b], closest[b]);
+    transform[p] = r.transform;
+  });
+  const std::vector<char> keep = best_partners(m, pairs, pair_rms, o.number_of_partners);
+  workers.for_each(0, pairs.size(), [&](std::size_t p, char&) {
+    if(!keep[p])
+      return;
+    const std::uint32_t a = pairs[p].first, b = pairs[p].second;
+    const SAI::Similarity_3d back = transform[p].inverse();
+    const std::vector<SAI::Similarity_3d> ta = align_parts(samples[a], over[a], transform[p], samples[b], closest[b]);
     const std::vector<SAI::Similarity_3d> tb = align_parts(samples[b], over[b], back, samples[a], closest[a]);
     link_samples(samples[a], a, [&](std::size_t i) -> const SAI::Similarity_3d& { return ta[over[a][samples[a].node[i]]]; },
                  samples[b], trees[b], b, o, links[p]);
@@ -306,30 +334,6 @@ inline void link_meshes(const std::vector<Coseg_mesh>& meshes, const std::vector
                  samples[i], trees[i], std::uint32_t(i), o, mirror);
     weigh_by_support(meshes[i].mirror_support, mirror);
   });
-}
-
-// Only the pairs among the `number_of_partners` best aligned of one of their meshes keep their
-// links: a poor alignment (other poses, other proportions) gives misleading correspondences.
-inline void keep_best_partners(std::size_t m, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
-                               const std::vector<double>& pair_rms, std::size_t number_of_partners,
-                               std::vector<std::vector<Correspondence>>& links)
-{
-  if(number_of_partners == 0)
-    return;
-  std::vector<std::vector<std::pair<double, std::size_t>>> of_mesh(m);
-  for(std::size_t p = 0; p < pairs.size(); ++p) {
-    of_mesh[pairs[p].first].emplace_back(pair_rms[p], p);
-    of_mesh[pairs[p].second].emplace_back(pair_rms[p], p);
-  }
-  std::vector<char> keep(pairs.size(), 0);
-  for(auto& list : of_mesh) {
-    std::sort(list.begin(), list.end());
-    for(std::size_t k = 0; k < number_of_partners && k < list.size(); ++k)
-      keep[list[k].second] = 1;
-  }
-  for(std::size_t p = 0; p < pairs.size(); ++p)
-    if(!keep[p])
-      std::vector<Correspondence>().swap(links[p]);
 }
 
 } // namespace internal

@@ -300,7 +300,6 @@ inline Coseg_result cosegment(std::vector<Coseg_mesh>& meshes, const Coseg_optio
   std::vector<std::vector<Correspondence>> links;
   std::vector<double> pair_rms;
   link_meshes(meshes, samples, trees, pairs, over, o, links, pair_rms);
-  keep_best_partners(m, pairs, pair_rms, o.number_of_partners, links);
   report(0.6);
   result.number_of_aligned_pairs = pairs.size();
   for(double r : pair_rms)
