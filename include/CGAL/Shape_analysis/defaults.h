@@ -6,10 +6,13 @@
 
 /// \file defaults.h
 /// The defaults of the named parameters that several packages share: the weighted dual graph of a
-/// mesh and the links between its connected components. The options structs of the packages'
+/// mesh and the links between its connected components; and the bound of the automatic numbers of
+/// segments. The options structs of the packages'
 /// functions (for example `CGAL::Consistent_segmentation::Hierarchical_segmentation_options` and
 /// `CGAL::Randomized_cuts::Partition_function_options`) initialize their members with these
 /// constants, so that the same parameter has the same default everywhere.
+
+#include <cstddef>
 
 namespace CGAL {
 namespace Shape_analysis {
@@ -28,6 +31,13 @@ constexpr double default_component_link_distance = 0.1;
 /// The default of the named parameter `component_link_factor`: the cut cost of a link between
 /// components, relative to the mean cut cost of the mesh edges (\f$k_{cc}\f$).
 constexpr double default_component_link_factor = 0.01;
+
+/// \ingroup PkgShapeAnalysisCore
+/// The largest number of segments that an automatic count (`number_of_segments` 0) chooses in
+/// `CGAL::Consistent_segmentation::hierarchical_segmentation()`,
+/// `CGAL::Consistent_segmentation::consistent_segmentation()` and
+/// `CGAL::Randomized_cuts::segment_with_partition_function()`.
+constexpr std::size_t automatic_maximum_segments = 12;
 
 } // namespace Shape_analysis
 } // namespace CGAL

@@ -109,6 +109,7 @@ inline std::size_t automatic_set_count(const std::vector<Coseg_mesh>& meshes, co
     Segmentation_options so = o;
     so.number_of_segments = 0;
     so.progress_callback = {};
+    so.boundary_refinement = false; // moves boundaries, not the count
     const std::vector<std::size_t> labels =
       segment_dual_graph(g, so, meshes[i].prior.empty() ? nullptr : &meshes[i].prior);
     for(std::size_t l : labels)

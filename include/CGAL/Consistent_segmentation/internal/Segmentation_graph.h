@@ -9,6 +9,7 @@
 
 #include <CGAL/Consistent_segmentation/Hierarchical_segmentation_options.h>
 #include <CGAL/Shape_analysis/Bad_input.h>
+#include <CGAL/Shape_analysis/defaults.h>
 #include <CGAL/Shape_analysis/internal/Component_links.h>
 #include <CGAL/Shape_analysis/internal/Dual_graph.h>
 #include <CGAL/Shape_analysis/internal/Labels.h>
@@ -85,7 +86,7 @@ inline void add_links_and_prior(CGAL::Shape_analysis::internal::Dual_graph& g, c
 // 0.224 with the fixed 8 segments and 0.122 with each mesh's human count; a weight of 0.8, 0.85 or
 // 0.95: 0.162, 0.156, 0.185; a maximum of 15, 20 or 30: 0.153, 0.154, 0.158.
 constexpr double automatic_crease_weight = 0.9;
-constexpr std::size_t automatic_maximum_segments = 12;
+using CGAL::Shape_analysis::automatic_maximum_segments;
 
 // `merges`: the whole history of the clustering of `g` down to one segment (or as few as its links
 // allow).

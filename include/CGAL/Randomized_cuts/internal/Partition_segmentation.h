@@ -17,6 +17,7 @@
 #include <CGAL/Randomized_cuts/Segment_with_partition_function_options.h>
 #include <CGAL/Randomized_cuts/internal/Consistent_cuts.h>
 #include <CGAL/Randomized_cuts/internal/Cut_sampling.h>
+#include <CGAL/Shape_analysis/defaults.h>
 #include <CGAL/Shape_analysis/internal/Component_links.h>
 #include <CGAL/Shape_analysis/internal/Labels.h>
 #include <CGAL/Shape_analysis/internal/Partition_refinement.h>
@@ -46,7 +47,7 @@ typedef Segment_with_partition_function_options Partition_segmentation_options;
 // Princeton Segmentation Benchmark's development subset (see the manual).
 constexpr double automatic_crease_weight = 0.8;
 constexpr std::size_t automatic_minimum_segments = 4;
-constexpr std::size_t automatic_maximum_segments = 12;
+using CGAL::Shape_analysis::automatic_maximum_segments;
 
 class Partition_segmentation
 {
