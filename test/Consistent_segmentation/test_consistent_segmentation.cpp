@@ -698,8 +698,8 @@ TEST(Articulated, EachOverSegmentIsAlignedOnItsOwn)
       EXPECT_GT((tip - turned_tip).length(), 0.6);
     EXPECT_DOUBLE_EQ(t[1].scale, 1.0);
   }
-  // Limits: an arm turned by 60 degrees is corrected by at most 0.6 radians; an over-segment of
-  // fewer than 12 samples keeps the mesh alignment exactly.
+  // Limits: an arm turned by 60 degrees, which the ICP alone would follow beyond 0.6 radians,
+  // keeps the mesh alignment; so does an over-segment of fewer than 12 samples.
   CSI::Surface_sample a, b;
   sample_box(body_c, body_h, 0, joint, 600, 1, a);
   sample_box(arm_c, arm_h, 0, joint, 300, 2, a);
@@ -711,7 +711,22 @@ TEST(Articulated, EachOverSegmentIsAlignedOnItsOwn)
   SAI::Similarity_3d shifted;
   shifted.translation = Vector_3d(0.01, 0, 0);
   const std::vector<SAI::Similarity_3d> t = CSI::align_parts(a, part, shifted, b, closest_b);
-  EXPECT_LE(SAI::rotation_angle_between(t[1].rotation, SAI::identity_matrix()), CSI::max_part_turn + 1e-12);
+  // The same ICP without the limit turns the arm by more: the correction is refused.
+  std::vector<SAI::Vector_3d> arm;
+  for(std::size_t i = 600; i < 900; ++i)
+    arm.push_back(shifted(a.points[i]));
+  SAI::Icp_options io;
+  io.symmetric = false;
+  io.with_scale = false;
+  io.point_to_plane = false;
+  io.keep_fraction = 0.8;
+  io.max_iterations = 20;
+  SAI::Icp_workspace w;
+  const SAI::Icp_result free_arm =
+    SAI::make_similarity_icp(arm, closest_b, b.points, closest_b).run(SAI::Similarity_3d(), io, w);
+  EXPECT_GT(SAI::rotation_angle_between(free_arm.transform.rotation, SAI::identity_matrix()), CSI::max_part_turn);
+  EXPECT_EQ(t[1].translation.x, shifted.translation.x);
+  EXPECT_EQ(SAI::rotation_angle_between(t[1].rotation, SAI::identity_matrix()), 0.0);
   std::fill(part.begin() + 600, part.end(), 2);
   std::fill(part.begin() + 889, part.end(), 1); // over-segment 1: 11 samples of the arm's end
   const std::vector<SAI::Similarity_3d> u = CSI::align_parts(a, part, shifted, b, closest_b);

@@ -123,11 +123,10 @@ the first six such meshes are compared), their regions have areas within 25% of 
 region, moved by the best rigid motion with or without a reflection, lies on the other: the RMS
 distance between the two surfaces (the closest 90% of the point pairs, both ways) at most
 `duplicate_tolerance` of the RMS radius of the region of the lower id. Mirror images (left and
-right) and copies (front and back) alike. Merged
-groups take the place of their first id; ids are then renumbered without gaps, in their order.
-Ids with a known label (`Consistent_segmentation_result::segment_label`) are never merged and
-keep their values, as do the ids between them that no face carries; the other ids follow the
-largest label.
+right) and copies (front and back) alike. Ids with a known label
+(`Consistent_segmentation_result::segment_label`) are never merged and keep their values, as do
+the ids between them that no face carries; the groups of the other ids are numbered after the
+largest label (from 0 without labels), in the order of their first id.
 
 \tparam MeshRange a range of models of `FaceListGraph`, as for `consistent_segmentation()`
 \tparam FaceSegmentMapRange a range of models of `ReadWritePropertyMap` with the meshes'

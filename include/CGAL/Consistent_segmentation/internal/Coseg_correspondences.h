@@ -128,9 +128,9 @@ constexpr std::size_t min_part_samples = 12;
 
 // The transform of every over-segment of `from` (`part_of_node`: the over-segment of each node):
 // the alignment `t` of the whole mesh, corrected by a rigid ICP of the over-segment's samples alone
-// against the samples of the other mesh (one direction, the closest 80% of the pairs kept). A
-// correction that does not lower the trimmed RMS, turns by more than max_part_turn or moves the
-// over-segment's centroid by more than max_part_shift is not taken.
+// against the samples of the other mesh (one direction, the closest 80% of the pairs kept; its
+// steps never raise the trimmed RMS). A correction that turns by more than max_part_turn or moves
+// the over-segment's centroid by more than max_part_shift is not taken.
 inline std::vector<SAI::Similarity_3d>
 align_parts(const Surface_sample& from, const std::vector<std::size_t>& part_of_node, const SAI::Similarity_3d& t,
             const Surface_sample& to, const SAI::Closest_sample& to_closest)
@@ -155,7 +155,7 @@ align_parts(const Surface_sample& from, const std::vector<std::size_t>& part_of_
       continue;
     // One direction: the source's closest-point query is not used, the target's stands in.
     const auto icp = SAI::make_similarity_icp(points, to_closest, to.points, to_closest);
-    // run() keeps the identity unless a step lowers the trimmed RMS.
+    // run() keeps the identity unless a step does not raise the trimmed RMS.
     const SAI::Icp_result r = icp.run(SAI::Similarity_3d(), io, w);
     const double turn = SAI::rotation_angle_between(r.transform.rotation, SAI::identity_matrix());
     SAI::Vector_3d centroid;
