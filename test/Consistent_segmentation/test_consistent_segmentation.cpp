@@ -715,12 +715,7 @@ TEST(Articulated, EachOverSegmentIsAlignedOnItsOwn)
   std::vector<SAI::Vector_3d> arm;
   for(std::size_t i = 600; i < 900; ++i)
     arm.push_back(shifted(a.points[i]));
-  SAI::Icp_options io;
-  io.symmetric = false;
-  io.with_scale = false;
-  io.point_to_plane = false;
-  io.keep_fraction = 0.8;
-  io.max_iterations = 20;
+  const SAI::Icp_options io = CSI::part_icp_options();
   SAI::Icp_workspace w;
   const SAI::Icp_result free_arm =
     SAI::make_similarity_icp(arm, closest_b, b.points, closest_b).run(SAI::Similarity_3d(), io, w);

@@ -93,6 +93,15 @@ std::size_t range_size(const Range& range)
   return static_cast<std::size_t>(std::distance(std::begin(range), std::end(range)));
 }
 
+// Throws unless `range` (of `what`: "face segment maps", ...) has one element per mesh.
+template <typename Range>
+void require_one_per_mesh(const Range& range, std::size_t m, const std::string& what, const std::string& who)
+{
+  if(range_size(range) != m)
+    throw Bad_input(who + ": " + std::to_string(range_size(range)) + " " + what + " for " + std::to_string(m) +
+                    " meshes");
+}
+
 // Builds the dual graph and the triangles of a mesh (checked first).
 template <typename TriangleMesh, typename VertexPointMap>
 void prepare_mesh(const TriangleMesh& tm, VertexPointMap vpm, double alpha, const std::string& who,
@@ -373,9 +382,7 @@ Consistent_segmentation_result consistent_segmentation(const MeshRange& meshes,
   const std::size_t m = internal::range_size(meshes);
   if(m == 0)
     throw Bad_input(who + ": the set of meshes is empty");
-  if(internal::range_size(face_segment_maps) != m)
-    throw Bad_input(who + ": " + std::to_string(internal::range_size(face_segment_maps)) +
-                    " face segment maps for " + std::to_string(m) + " meshes");
+  internal::require_one_per_mesh(face_segment_maps, m, "face segment maps", who);
   const Consistent_segmentation_options options = consistent_segmentation_options(np);
   internal::check_coseg_options(options, who);
 
@@ -386,17 +393,11 @@ Consistent_segmentation_result consistent_segmentation(const MeshRange& meshes,
   constexpr bool has_known = !std::is_same<decltype(known), CGAL::internal_np::Param_not_found>::value;
   constexpr bool has_prior = !std::is_same<decltype(prior), CGAL::internal_np::Param_not_found>::value;
   if constexpr(has_vpms)
-    if(internal::range_size(vpms) != m)
-      throw Bad_input(who + ": " + std::to_string(internal::range_size(vpms)) +
-                      " vertex point maps for " + std::to_string(m) + " meshes");
+    internal::require_one_per_mesh(vpms, m, "vertex point maps", who);
   if constexpr(has_known)
-    if(internal::range_size(known) != m)
-      throw Bad_input(who + ": " + std::to_string(internal::range_size(known)) +
-                      " known segment maps for " + std::to_string(m) + " meshes");
+    internal::require_one_per_mesh(known, m, "known segment maps", who);
   if constexpr(has_prior)
-    if(internal::range_size(prior) != m)
-      throw Bad_input(who + ": " + std::to_string(internal::range_size(prior)) +
-                      " prior segment maps for " + std::to_string(m) + " meshes");
+    internal::require_one_per_mesh(prior, m, "prior segment maps", who);
 
   std::vector<internal::Coseg_mesh> data(m);
   std::vector<std::vector<face_descriptor>> faces_by_node(m);

@@ -200,9 +200,7 @@ std::size_t merge_repeated_segments(const MeshRange& meshes, const FaceSegmentMa
   const std::size_t m = internal::range_size(meshes);
   if(m == 0)
     throw Bad_input(who + ": the set of meshes is empty");
-  if(internal::range_size(face_segment_maps) != m)
-    throw Bad_input(who + ": " + std::to_string(internal::range_size(face_segment_maps)) +
-                    " face segment maps for " + std::to_string(m) + " meshes");
+  internal::require_one_per_mesh(face_segment_maps, m, "face segment maps", who);
   const std::size_t k = result.number_of_segments;
   if(result.meshes_of_segment.size() != k || result.segment_area.size() != k || result.segment_label.size() != k)
     throw Bad_input(who + ": the result's tables do not have one entry per segment (" + std::to_string(k) + ")");
@@ -219,9 +217,7 @@ std::size_t merge_repeated_segments(const MeshRange& meshes, const FaceSegmentMa
   auto vpms = get_parameter(np, snp::vertex_point_maps_tag);
   constexpr bool has_vpms = !std::is_same<decltype(vpms), CGAL::internal_np::Param_not_found>::value;
   if constexpr(has_vpms)
-    if(internal::range_size(vpms) != m)
-      throw Bad_input(who + ": " + std::to_string(internal::range_size(vpms)) + " vertex point maps for " +
-                      std::to_string(m) + " meshes");
+    internal::require_one_per_mesh(vpms, m, "vertex point maps", who);
 
   std::vector<internal::Segmented_triangles> data(m);
   for(std::size_t i = 0; i < m; ++i) {

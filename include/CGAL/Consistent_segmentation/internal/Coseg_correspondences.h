@@ -126,6 +126,19 @@ constexpr double max_part_turn = 0.6;
 constexpr double max_part_shift = 0.1;
 constexpr std::size_t min_part_samples = 12;
 
+// The ICP of one over-segment: rigid, from its samples to the other mesh's (one direction,
+// between samples), the closest 80% of the pairs kept.
+inline SAI::Icp_options part_icp_options()
+{
+  SAI::Icp_options io;
+  io.symmetric = false;
+  io.with_scale = false;
+  io.point_to_plane = false;
+  io.keep_fraction = 0.8;
+  io.max_iterations = 20;
+  return io;
+}
+
 // The transform of every over-segment of `from` (`part_of_node`: the over-segment of each node):
 // the alignment `t` of the whole mesh, corrected by a rigid ICP of the over-segment's samples alone
 // against the samples of the other mesh (one direction, the closest 80% of the pairs kept; its
@@ -142,12 +155,7 @@ align_parts(const Surface_sample& from, const std::vector<std::size_t>& part_of_
   std::vector<std::vector<SAI::Vector_3d>> moved(parts);
   for(std::size_t i = 0; i < from.points.size(); ++i)
     moved[part_of_node[from.node[i]]].push_back(t(from.points[i]));
-  SAI::Icp_options io;
-  io.symmetric = false;
-  io.with_scale = false;
-  io.point_to_plane = false;
-  io.keep_fraction = 0.8;
-  io.max_iterations = 20;
+  const SAI::Icp_options io = part_icp_options();
   SAI::Icp_workspace w;
   for(std::size_t p = 0; p < parts; ++p) {
     const std::vector<SAI::Vector_3d>& points = moved[p];
@@ -292,8 +300,8 @@ inline void link_meshes(const std::vector<Coseg_mesh>& meshes, const std::vector
     prefix[i].assign(samples[i].points.begin(),
                      samples[i].points.begin() + std::ptrdiff_t((std::min)(aligned_points, samples[i].points.size())));
   SAI::Parallel_workspaces<char> workers(o.number_of_threads);
-  std::vector<SAI::Closest_sample> closest(m);
-  workers.for_each(0, m, [&](std::size_t i, char&) { closest[i] = SAI::Closest_sample(samples[i].points); });
+  std::vector<SAI::Closest_sample> closest(pairs.empty() ? 0 : m); // for align_parts()
+  workers.for_each(0, closest.size(), [&](std::size_t i, char&) { closest[i] = SAI::Closest_sample(samples[i].points); });
   std::vector<SAI::Similarity_3d> transform(pairs.size());
   workers.for_each(0, pairs.size(), [&](std::size_t p, char&) {
     const std::uint32_t a = pairs[p].first, b = pairs[p].second;

@@ -89,25 +89,12 @@ inline Region make_region(const Segmented_triangles& mesh, std::size_t s, const 
   return r;
 }
 
-// The RMS distance of the points to their centroid.
-inline double rms_radius(const std::vector<SAI::Vector_3d>& points)
-{
-  SAI::Vector_3d c;
-  for(const SAI::Vector_3d& p : points)
-    c += p;
-  c = c / double(points.size());
-  double sum = 0;
-  for(const SAI::Vector_3d& p : points)
-    sum += (p - c).squared_length();
-  return std::sqrt(sum / double(points.size()));
-}
-
 // How far region `b` is from being a copy of region `a`: the trimmed RMS distance between the
 // surfaces after the best rigid alignment of b (as it is, or mirrored) onto a, over the RMS radius
 // of a.
 inline double repeat_distance(const Region& a, const Region& b)
 {
-  const double radius = rms_radius(a.points);
+  const double radius = SAI::weighted_pca(a.points).rms_radius();
   if(!(radius > 0))
     return std::numeric_limits<double>::infinity();
   SAI::Restart_alignment_options ao;
@@ -150,6 +137,7 @@ inline std::vector<std::size_t> repeated_segment_groups(const std::vector<Segmen
     std::size_t a, b, mesh;
   };
   std::vector<Item> items;
+  std::vector<std::size_t> compared; // per pair with items: the meshes that have both
   for(std::size_t a = 0; a < number_of_ids; ++a)
     for(std::size_t b = a + 1; b < number_of_ids; ++b) {
       if((a < label.size() && label[a] >= 0) || (b < label.size() && label[b] >= 0))
@@ -166,6 +154,8 @@ inline std::vector<std::size_t> repeated_segment_groups(const std::vector<Segmen
       }
       if(2 * (items.size() - first) < both || both == 0)
         items.resize(first); // too few meshes where the areas agree
+      else
+        compared.push_back(both);
     }
   // The samples of every (mesh, id) that some item compares, drawn once.
   std::vector<std::pair<std::size_t, std::size_t>> regions;
@@ -198,14 +188,12 @@ inline std::vector<std::size_t> repeated_segment_groups(const std::vector<Segmen
       x = group[x] = group[group[x]];
     return x;
   };
-  for(std::size_t k = 0; k < items.size();) {
+  for(std::size_t k = 0, pair = 0; k < items.size(); ++pair) {
     const std::size_t a = items[k].a, b = items[k].b;
-    std::size_t yes = 0, both = 0;
-    for(std::size_t i = 0; i < m && both < o.meshes_per_pair; ++i)
-      both += area[i][a] > 0 && area[i][b] > 0 ? 1 : 0;
+    std::size_t yes = 0;
     for(; k < items.size() && items[k].a == a && items[k].b == b; ++k)
       yes += std::size_t(repeat[k]);
-    if(2 * yes >= both) {
+    if(2 * yes >= compared[pair]) {
       const std::size_t ra = find(a), rb = find(b);
       group[(std::max)(ra, rb)] = (std::min)(ra, rb);
     }
