@@ -73,6 +73,8 @@ SAS::Json remesh(const Mesh& symmetrized, const Mesh& input, const Symmetry& s, 
   j["meta_mesh_faces"] = r.meta_mesh_faces;
   j["mirror_points"] = r.mirror_points;
   j["flips"] = r.flips;
+  j["overlaid_regions"] = r.overlaid_regions;
+  j["overlay_points"] = r.overlay_points;
   j["copied_faces"] = r.copied_faces;
   j["copied_whole_side"] = r.copied_whole_side;
   const SAS::Mesh_distance to_symmetrized = SAS::mesh_distance(m, symmetrized, diagonal);

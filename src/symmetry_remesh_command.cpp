@@ -135,6 +135,8 @@ int run_remesh(const Remesh_options& o)
   report["meta_mesh_faces"] = r.meta_mesh_faces;
   report["mirror_points"] = r.mirror_points;
   report["flips"] = r.flips;
+  report["overlaid_regions"] = r.overlaid_regions;
+  report["overlay_points"] = r.overlay_points;
   report["copied_faces"] = r.copied_faces;
   report["copied_whole_side"] = r.copied_whole_side;
   finish(o, outputs, progress, input.mesh, report, seconds, read_seconds, total.seconds());
@@ -214,7 +216,8 @@ void add_symmetry_remesh_commands(CLI::App* symmetry, std::function<int()>& run)
                    "Cut at the plane and copy the positive side across it instead (the simple alternative)");
   remesh->add_option("--report", r->report,
                      "JSON report: plane, symmetrized, paired_vertices, symmetric_edges, symmetric_faces "
-                     "(fractions), faces, mirror_points, flips, copied_faces, seconds");
+                     "(fractions), faces, mirror_points, flips, overlaid_regions, overlay_points, copied_faces, "
+                     "seconds");
   remesh->callback([r, &run]() { run = [r]() { return run_remesh(*r); }; });
 
   auto d = std::make_shared<Remesh_options>();

@@ -159,6 +159,54 @@ TEST(SymmetricRemeshing, CopyOfOneSideIsSymmetricToo)
   EXPECT_LT(largest_vertex_distance(input, m), 0.01);
 }
 
+// A box [-1, 1]^3, symmetric under y -> -y, with the corner (1, 1, 1) pulled out to y = 2 and its
+// mirror image to y = -2: its faces y = 1 and y = -1 are bent quads (mirror images as surfaces),
+// split by crossing diagonals (a-c on one side, the mirror image of b-d on the other), so the two
+// sides fold along different lines. The four faces across the plane are fans around a centre on it.
+Mesh bent_box()
+{
+  Mesh m;
+  const auto add = [&](double x, double y, double z) { return m.add_vertex(Point(x, y, z)); };
+  const auto a = add(-1, 1, -1), b = add(1, 1, -1), c = add(1, 2, 1), d = add(-1, 1, 1);
+  const auto ma = add(-1, -1, -1), mb = add(1, -1, -1), mc = add(1, -2, 1), md = add(-1, -1, 1);
+  m.add_face(a, d, c); // y > 0, outward: diagonal a-c
+  m.add_face(a, c, b);
+  m.add_face(ma, mb, md); // y < 0, outward: diagonal mb-md
+  m.add_face(mb, mc, md);
+  const auto fan = [&](Mesh::Vertex_index centre, std::vector<Mesh::Vertex_index> ring) {
+    for(std::size_t i = 0; i < ring.size(); ++i)
+      m.add_face(centre, ring[i], ring[(i + 1) % ring.size()]);
+  };
+  fan(add(1, 0, 0), {mb, b, c, mc});    // x = 1
+  fan(add(-1, 0, 0), {ma, md, d, a});   // x = -1
+  fan(add(0, 0, 1), {md, mc, c, d});    // z = 1
+  fan(add(0, 0, -1), {ma, a, b, mb});   // z = -1
+  return m;
+}
+
+TEST(SymmetricRemeshing, BothSidesFoldsAreOverlaid)
+{
+  const Mesh input = bent_box();
+  ASSERT_TRUE(CGAL::is_valid_polygon_mesh(input) && CGAL::is_closed(input));
+  const double diagonal = surface_of(input).diagonal();
+  Mesh overlaid = input, copied = input;
+  const SY::Symmetric_remeshing_result r =
+    SY::symmetric_remeshing(overlaid, y_reflection, SY::parameters::number_of_faces(1000));
+  EXPECT_EQ(r.flips, 0u) << "the flip across the fold moves the surface too far";
+  EXPECT_EQ(r.overlaid_regions, 1u);
+  EXPECT_EQ(r.overlay_points, 2u) << "the diagonals cross once on each side";
+  EXPECT_EQ(r.copied_faces, 0u);
+  EXPECT_EQ(r.faces, num_faces(input) + 4) << "each bent quad in four triangles around the crossing";
+  expect_symmetric_mesh(overlaid, y_reflection);
+  SY::symmetric_remeshing(copied, y_reflection, SY::parameters::number_of_faces(1000).copy_one_side(true));
+  expect_symmetric_mesh(copied, y_reflection);
+  // The copy puts one side's fold on both; the overlay keeps both folds, half way.
+  const double overlay_distance = SAS::mesh_distance(overlaid, input, diagonal).hausdorff,
+               copy_distance = SAS::mesh_distance(copied, input, diagonal).hausdorff;
+  EXPECT_GT(copy_distance, 0.01);
+  EXPECT_LT(overlay_distance, 0.75 * copy_distance);
+}
+
 TEST(SymmetricRemeshing, SameResultMovedInAnotherPose)
 {
   const Mesh input = ellipsoid(12, 20, 0.25, 9);

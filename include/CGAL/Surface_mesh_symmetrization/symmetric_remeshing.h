@@ -10,6 +10,7 @@
 
 #include <CGAL/Surface_mesh_symmetrization/symmetric_decimation.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Side_copy.h>
+#include <CGAL/Surface_mesh_symmetrization/internal/Side_overlay.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Symmetric_remeshing.h>
 
 #include <cstddef>
@@ -65,6 +66,8 @@ struct Symmetric_remeshing_result
   std::size_t faces_before = 0;      ///< the input's faces
   std::size_t mirror_points = 0;     ///< vertices given a partner by inserting their mirror point
   std::size_t flips = 0;             ///< edges flipped to give them a mirror edge
+  std::size_t overlaid_regions = 0;  ///< regions where both sides' triangulations were overlaid
+  std::size_t overlay_points = 0;    ///< vertices the overlay made where their edges cross (in pairs)
   std::size_t copied_faces = 0;      ///< faces (pieces cut at the plane) copied across it
   bool copied_whole_side = false;    ///< whether the whole positive side was copied
   std::size_t meta_mesh_faces = 0;   ///< the faces of the symmetric mesh before its decimation
@@ -78,6 +81,14 @@ namespace internal {
 // The symmetric mesh of a closed surface in its plane's frame with exact pairs: mirror points,
 // flips and the copy of what is left (of the whole side when `copy_one_side`, or when copying the
 // rest only would pinch the surface).
+// How far (times the mean edge length) a flip of the remeshing may move the surface. The flips
+// give edges mirror edges without new points, but across a crease they cut it; the overlay
+// (Side_overlay.h) keeps both sides' creases where the flips leave edges without mirror. With the
+// overlay, Hausdorff distance to the input at the input's faces, 0.1 -> 0.05: PSB mesh 321
+// 0.00184 -> 0.00147, 323 0.00070 -> 0.00049, the cow and the camel unchanged (0.0107, 0.00154);
+// 0.01 gives 321 0.00235 once decimated.
+constexpr double flip_bound = 0.05;
+
 inline void symmetric_meta_mesh(const Surface& s, const std::vector<std::uint32_t>& partner, bool copy_one_side,
                                 Symmetric_remeshing_result& r, Surface& meta, std::vector<std::uint32_t>& meta_partner,
                                 const std::string& who)
@@ -87,9 +98,14 @@ inline void symmetric_meta_mesh(const Surface& s, const std::vector<std::uint32_
     const double h = mean_edge_length(s);
     r.mirror_points = remesher.insert_mirror_points(h);
     remesher.make_pairs_exact();
-    r.flips = remesher.flip(0.1 * h);
+    r.flips = remesher.flip(flip_bound * h);
   }
   remesher.export_surface(meta, meta_partner);
+  if(!copy_one_side) {
+    const Side_overlay::Counts c = Side_overlay::overlay(meta, meta_partner);
+    r.overlaid_regions = c.overlaid;
+    r.overlay_points = 2 * c.crossings;
+  }
   std::size_t copied = copy_one_side ? no_partner : copy_across_plane(meta, meta_partner, false);
   if(copied == no_partner) {
     r.copied_whole_side = true;
@@ -116,7 +132,11 @@ The steps: vertices are paired as `measure_symmetric_connectivity()` does; each 
 without a partner gets one, a new vertex where its mirror image meets the surface (the face or
 edge there split); pairs move to exact mirror positions (their mean); edges without a mirror edge
 are flipped when the new edge has one, best first, unless the flip folds the surface or moves it
-by more than a tenth of the mean edge length; the faces still without a mirror face are cut at
+by more than a twentieth of the mean edge length; where the sides' triangulations still differ
+around an edge sharper than 0.5 rad, they are overlaid (each region between the edges they share
+mapped to the plane, the edges of both inserted into a constrained triangulation that splits them
+where they cross, each crossing half way between its points on the two sides, the result mirrored
+onto the negative side); the faces still without a mirror face are cut at
 the plane and those on the positive side (where the plane's normal points) copied across it in
 place of those on the negative side (a vertex on the plane where the copy would pinch the surface
 first moves off it by a hundredth of the mean edge length; the whole positive side is copied when

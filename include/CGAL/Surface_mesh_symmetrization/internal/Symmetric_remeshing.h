@@ -18,7 +18,8 @@
 //    least change of the surface (the squared distances of the new edge's midpoint to the planes
 //    of the two faces replaced), never across a fold. Only edges without a mirror are flipped and
 //    each flip adds one or two mirrored edges, so the flips end and never undo a correspondence.
-// What is left without a mirror is copied across the plane (Side_copy.h).
+// Where the sides' triangulations still differ around a sharp edge they are overlaid
+// (Side_overlay.h); what is left without a mirror is copied across the plane (Side_copy.h).
 
 #include <CGAL/Surface_mesh_symmetrization/internal/Surface_index.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Symmetric_connectivity.h>
