@@ -132,16 +132,13 @@ public:
       if(!has_sharp_edge(c, C) && !has_sharp_edge(c, M))
         continue; // (elsewhere the two sides' tessellations differ by little)
       std::vector<Triangle> faces;
-      std::vector<Vector_3d> crossing_p,
-        crossing_q; // per new point: P, mirror(Q)
+      std::vector<Vector_3d> crossing_p, crossing_q; // per crossing: P, mirror(Q)
       if(!usable || C.empty() || M.empty() || !overlay_region(c, C, M, faces, crossing_p, crossing_q))
         continue;
       // New points: the crossings on the positive side, then their partners.
       const std::uint32_t first = std::uint32_t(c.points.size()), n = std::uint32_t(crossing_p.size());
       for(std::uint32_t k = 0; k < n; ++k) {
-        Vector_3d q = (crossing_p[k] + crossing_q[k]) * 0.5;
-        q.x = (std::max)(q.x, 0.0);
-        c.points.push_back(q);
+        c.points.push_back((crossing_p[k] + crossing_q[k]) * 0.5); // (off the plane: see cross())
         p.push_back(first + n + k);
       }
       for(std::uint32_t k = 0; k < n; ++k) {
