@@ -369,6 +369,8 @@ private:
         for(std::uint32_t v = start; loop.size() <= border;) {
           loop.push_back(v);
           v = next[v];
+          if(v == no_partner)
+            return false; // the border enters a vertex twice and never leaves it
           if(v == start)
             break;
         }
