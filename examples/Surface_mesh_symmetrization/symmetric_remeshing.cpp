@@ -49,8 +49,8 @@ int main(int argc, char** argv)
     const SMSY::Symmetric_remeshing_result r = SMSY::symmetric_remeshing(mesh, symmetry);
     std::cout << "symmetrized: " << 100 * r.before.symmetric_edges << "% of the edges mirrored; remeshed ("
               << r.mirror_points << " mirror points, " << r.flips << " flips, " << r.overlaid_regions
-              << " regions of both sides overlaid, " << r.copied_faces << " faces copied across the plane): " << r.faces << " faces, " << 100 * r.after.symmetric_edges
-              << "% mirrored\n";
+              << " regions of both sides overlaid, " << r.copied_faces << " faces copied across the plane): " << r.faces
+              << " faces, " << 100 * r.after.symmetric_edges << "% mirrored\n";
     CGAL::IO::write_polygon_mesh(prefix + "_remeshed.off", mesh, CGAL::parameters::stream_precision(17));
 
     // 3. Decimated to a fifth, every collapse with its mirror collapse.

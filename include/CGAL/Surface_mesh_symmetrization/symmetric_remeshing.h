@@ -78,9 +78,6 @@ struct Symmetric_remeshing_result
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-// The symmetric mesh of a closed surface in its plane's frame with exact pairs: mirror points,
-// flips and the copy of what is left (of the whole side when `copy_one_side`, or when copying the
-// rest only would pinch the surface).
 // How far (times the mean edge length) a flip of the remeshing may move the surface. The flips
 // give edges mirror edges without new points, but across a crease they cut it; the overlay
 // (Side_overlay.h) keeps both sides' creases where the flips leave edges without mirror. With the
@@ -89,6 +86,9 @@ namespace internal {
 // 0.01 gives 321 0.00235 once decimated.
 constexpr double flip_bound = 0.05;
 
+// The symmetric mesh of a closed surface in its plane's frame with exact pairs: mirror points,
+// flips, the overlay of both sides where they still differ at creases, and the copy of what is left
+// (of the whole side when `copy_one_side`, or when copying the rest only would pinch the surface).
 inline void symmetric_meta_mesh(const Surface& s, const std::vector<std::uint32_t>& partner, bool copy_one_side,
                                 Symmetric_remeshing_result& r, Surface& meta, std::vector<std::uint32_t>& meta_partner,
                                 const std::string& who)

@@ -77,7 +77,6 @@ public:
   // What overlay() did.
   struct Counts
   {
-    std::size_t regions = 0;   // regions of faces without a mirror face (groups of C and M matched)
     std::size_t overlaid = 0;  // of them, overlaid (the others are left to the copy)
     std::size_t crossings = 0; // vertices made where an edge of one side crosses one of the other
   };
@@ -110,30 +109,27 @@ public:
         is_mirrored.push_back(0);
       } else {
         if(p[t[0]] == no_partner || p[t[1]] == no_partner || p[t[2]] == no_partner)
-          pieces.push_back(t); // its own region, on the negative side: never overlaid
+          pieces.push_back(t); // (never overlaid: see below)
         else
           pieces.push_back({{p[t[2]], p[t[1]], p[t[0]]}});
         is_mirrored.push_back(1);
       }
     }
     const std::map<std::uint32_t, std::vector<std::uint32_t>> regions = match_regions(pieces, is_mirrored);
-    counts.regions = regions.size();
 
     std::vector<Triangle> added;
     std::vector<char> overlaid_piece(pieces.size(), 0);
     for(const auto& region : regions) {
+      // (A negative piece without partners keeps its own indices: its group's border matches no
+      // C group's, and Region::number() refuses M vertices that C lacks.)
       std::vector<Triangle> C, M;
-      bool usable = true;
       for(std::uint32_t i : region.second)
         (is_mirrored[i] ? M : C).push_back(pieces[i]);
-      for(const Triangle& t : M) // (a negative piece without partners is left as it is)
-        for(std::uint32_t v : t)
-          usable = usable && c.points[v].x >= 0;
       if(!has_sharp_edge(c, C) && !has_sharp_edge(c, M))
         continue; // (elsewhere the two sides' tessellations differ by little)
       std::vector<Triangle> faces;
       std::vector<Vector_3d> crossing_p, crossing_q; // per crossing: P, mirror(Q)
-      if(!usable || C.empty() || M.empty() || !overlay_region(c, C, M, faces, crossing_p, crossing_q))
+      if(C.empty() || M.empty() || !overlay_region(c, C, M, faces, crossing_p, crossing_q))
         continue;
       // New points: the crossings on the positive side, then their partners.
       const std::uint32_t first = std::uint32_t(c.points.size()), n = std::uint32_t(crossing_p.size());
@@ -157,7 +153,7 @@ public:
       ++counts.overlaid;
     }
     if(counts.overlaid == 0)
-      return Counts{counts.regions, 0, 0};
+      return Counts();
     // The faces: those not listed, the listed ones of regions not overlaid, the overlays.
     std::vector<Triangle> out;
     std::size_t piece = 0;
@@ -173,7 +169,7 @@ public:
     out.insert(out.end(), added.begin(), added.end());
     c.triangles.swap(out);
     if(!is_closed_manifold(c))
-      return Counts{counts.regions, 0, 0};
+      return Counts();
     drop_unused_points(c, p);
     std::swap(s, c);
     partner.swap(p);
