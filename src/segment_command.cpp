@@ -131,8 +131,9 @@ void add_segment_command(CLI::App& app, std::function<int()>& run,
     "segment", "Segment a triangle mesh into parts (hierarchical area-normalized cut).");
   cmd->add_option("input", options->input, "Input triangle mesh (.off, .ply, .obj, .stl)")->required();
   cmd->add_option("-k,--segments", so.number_of_segments,
-                  "Number of segments, or auto: chosen from 2 to 12 where the merges stop removing concave "
-                  "creases (the report's number_of_segments is then 0, its segments the number chosen)")
+                  "Number of segments, or auto: chosen from 2 to 12, the number whose boundaries run most "
+                  "along concave creases (the report's number_of_segments is then 0, its segments the "
+                  "number chosen)")
     ->capture_default_str()
     ->transform(positive_count_or_auto);
   cmd->add_option("-o,--output", options->output_ply,

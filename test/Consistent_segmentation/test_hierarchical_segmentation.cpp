@@ -236,8 +236,8 @@ void expect_parts_recovered(const SAS::Procedural_shape& shape, double cell, con
 TEST(AutomaticCount, NeverMergesPartsBoundedByCreasesAndSegmentsAsIfGiven)
 {
   // Parts joined along concave creases stay apart: the count chosen is at least the number of
-  // parts (every later merge removes creases only), within [2, 12]; the segmentation is the one
-  // given that count.
+  // parts (the boundaries between them, creases, raise the score of every count that keeps them),
+  // within [2, 12]; the segmentation is the one given that count.
   const std::pair<SAS::Procedural_shape, double> shapes[] = {{SAS::three_sphere_chain(), 0.2},
                                                              {SAS::three_sphere_chain(2), 0.18},
                                                              {SAS::body_with_limbs(), 0.14},

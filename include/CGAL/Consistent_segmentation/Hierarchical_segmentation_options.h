@@ -29,8 +29,8 @@ where the defaults are written; the manual, `hierarchical_segmentation_options()
 struct Hierarchical_segmentation_options
 {
   /// the number of segments to produce, between 1 and the number of faces; 0 chooses it
-  /// automatically, from 2 to 12, by where the merges stop removing concave creases (see
-  /// `hierarchical_segmentation()`)
+  /// automatically, from 2 to 12, as the number whose boundaries run most along concave creases
+  /// (see `hierarchical_segmentation()`)
   std::size_t number_of_segments = 8;
   /// the exponent \f$\alpha\f$ of the concavity weight \f$\min((\theta/\pi)^\alpha, 1)\f$: larger
   /// values make concave creases relatively cheaper to cut (at least 0)
