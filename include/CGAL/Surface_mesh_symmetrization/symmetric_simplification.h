@@ -78,17 +78,12 @@ struct Edge_table
   std::vector<std::array<std::uint32_t, 2>> ends;
   std::vector<std::array<std::uint32_t, 3>> of_face;
 
-  static std::uint64_t key(std::uint32_t a, std::uint32_t b)
-  {
-    return a < b ? (std::uint64_t(a) << 32 | b) : (std::uint64_t(b) << 32 | a);
-  }
-
   explicit Edge_table(const std::vector<std::array<std::uint32_t, 3>>& triangles) : of_face(triangles.size())
   {
     for(std::size_t f = 0; f < triangles.size(); ++f)
       for(std::size_t k = 0; k < 3; ++k) {
         const std::uint32_t a = triangles[f][k], b = triangles[f][(k + 1) % 3];
-        const auto it = index.emplace(key(a, b), std::uint32_t(ends.size()));
+        const auto it = index.emplace(edge_key(a, b), std::uint32_t(ends.size()));
         if(it.second)
           ends.push_back({{a, b}});
         of_face[f][k] = it.first->second;
@@ -98,7 +93,7 @@ struct Edge_table
   // The edge from a to b, or no_partner.
   std::uint32_t find(std::uint32_t a, std::uint32_t b) const
   {
-    const auto it = index.find(key(a, b));
+    const auto it = index.find(edge_key(a, b));
     return it == index.end() ? no_partner : it->second;
   }
 };

@@ -31,6 +31,7 @@
 //   or that would get an edge shorter than 1e-10 of C's mean edge are left as they are, to the
 //   copy.
 
+#include <CGAL/Shape_analysis/internal/Union_find.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Side_copy.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Symmetric_connectivity.h>
 
@@ -47,7 +48,6 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
-#include <numeric>
 #include <set>
 #include <unordered_map>
 #include <utility>
@@ -183,35 +183,26 @@ private:
   static std::map<std::uint32_t, std::vector<std::uint32_t>> match_regions(const std::vector<Triangle>& pieces,
                                                                            const std::vector<char>& is_mirrored)
   {
-    const auto key = [](std::uint32_t u, std::uint32_t v) {
-      return u < v ? (std::uint64_t(u) << 32 | v) : (std::uint64_t(v) << 32 | u);
-    };
     std::unordered_map<std::uint64_t, int> sides_of; // bit 1: in C, bit 2: in M
     for(std::uint32_t i = 0; i < pieces.size(); ++i)
       for(int k = 0; k < 3; ++k)
-        sides_of[key(pieces[i][k], pieces[i][(k + 1) % 3])] |= is_mirrored[i] ? 2 : 1;
-    std::vector<std::uint32_t> root(pieces.size());
-    std::iota(root.begin(), root.end(), 0u);
-    const auto find = [&](std::uint32_t i) {
-      while(root[i] != i)
-        i = root[i] = root[root[i]];
-      return i;
-    };
+        sides_of[edge_key(pieces[i][k], pieces[i][(k + 1) % 3])] |= is_mirrored[i] ? 2 : 1;
+    SAI::Union_find sets(pieces.size());
     {
       std::unordered_map<std::uint64_t, std::uint32_t> first[2];
       for(std::uint32_t i = 0; i < pieces.size(); ++i)
         for(int k = 0; k < 3; ++k) {
-          const std::uint64_t e = key(pieces[i][k], pieces[i][(k + 1) % 3]);
+          const std::uint64_t e = edge_key(pieces[i][k], pieces[i][(k + 1) % 3]);
           if(sides_of[e] == 3)
             continue;
           const auto it = first[is_mirrored[i]].emplace(e, i);
           if(!it.second)
-            root[find(i)] = find(it.first->second);
+            sets.absorb(it.first->second, i);
         }
     }
     std::map<std::uint32_t, std::vector<std::uint32_t>> groups;
     for(std::uint32_t i = 0; i < pieces.size(); ++i)
-      groups[find(i)].push_back(i);
+      groups[sets.find(i)].push_back(i);
     const auto border_of = [&](const std::vector<std::uint32_t>& group) {
       std::set<std::pair<std::uint32_t, std::uint32_t>> directed, border;
       for(std::uint32_t i : group)
@@ -382,9 +373,8 @@ private:
           length[i + 1] = length[i] + (s.points[global[loop[(i + 1) % border]]] - s.points[global[loop[i]]]).length();
         if(!(length[border] > 0))
           return false;
-        const double pi = 3.14159265358979323846;
         for(std::size_t i = 0; i < border; ++i) {
-          const double angle = 2 * pi * length[i] / length[border];
+          const double angle = 2 * CGAL_PI * length[i] / length[border];
           u[loop[i]] = std::cos(angle);
           w[loop[i]] = std::sin(angle);
           on_border[loop[i]] = 1;

@@ -24,6 +24,12 @@ namespace CGAL {
 namespace Surface_mesh_symmetrization {
 namespace internal {
 
+// The key of the undirected edge between vertices a and b.
+inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b)
+{
+  return a < b ? (std::uint64_t(a) << 32 | b) : (std::uint64_t(b) << 32 | a);
+}
+
 // The frame of a plane: x the signed distance to the plane, (y, z) along it, from the projection
 // of a point near the surface (so that the coordinates stay small).
 struct Plane_frame
