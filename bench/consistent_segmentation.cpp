@@ -24,13 +24,15 @@
 //    --sweep LIST also co-segments every class with other parameters (and re-runs (a) with the
 //    new segment counts); LIST is comma-separated, each item '+'-joined settings o<n>
 //    (number_of_oversegments), a<x> (adjacency_exponent), p<n> (number_of_points), n<n>
-//    (number_of_partners), d<x> (correspondence_distance), t<x> (normal_threshold), for example
-//    "o20,o50,a0.1,a0.3,p2000,o50+a0.1".
+//    (number_of_partners), d<x> (correspondence_distance), t<x> (normal_threshold), r<n>
+//    (number_of_runs), for example "o20,o50,a0.1,a0.3,p2000,o50+a0.1,r1".
 //
 //   bench_consistent_segmentation [--parts chairs16,chairs100,psb] [--classes Chair,Table,...]
 //       [--psb DIR] [--seed 1] [--coseg-seed 0] [--edge-length 0.042] [--runs 3] [--oversegments 20]
-//       [--adjacency-exponent 0.1] [--points 1000] [--sweep LIST] [--segments auto] [--output FILE]
+//       [--adjacency-exponent 0.1] [--points 1000] [--coseg-runs 4] [--sweep LIST] [--segments auto]
+//       [--output FILE]
 //
+// --coseg-runs: number_of_runs of consistent_segmentation (the default is the function's).
 // --segments auto: the psb part co-segments with number_of_segments 0 (the count chosen by the
 // function) instead of the class' most frequent human count; (b) keeps the human counts.
 //
@@ -105,6 +107,7 @@ struct Coseg_parameters
   std::size_t partners = CS::Consistent_segmentation_options().number_of_partners;
   double distance = CS::Consistent_segmentation_options().correspondence_distance;
   double normals = CS::Consistent_segmentation_options().normal_threshold;
+  std::size_t runs = CS::Consistent_segmentation_options().number_of_runs;
 
   Json json() const
   {
@@ -116,6 +119,7 @@ struct Coseg_parameters
     j["number_of_partners"] = partners;
     j["correspondence_distance"] = distance;
     j["normal_threshold"] = normals;
+    j["number_of_runs"] = runs;
     return j;
   }
 };
@@ -144,6 +148,8 @@ bool parse_setting(const std::string& item, Coseg_parameters& p)
         p.distance = std::stod(s.substr(1));
       else if(s[0] == 't')
         p.normals = std::stod(s.substr(1));
+      else if(s[0] == 'r')
+        p.runs = std::stoul(s.substr(1));
       else
         return false;
     } catch(...) {
@@ -179,6 +185,7 @@ Coseg_run run_consistent(std::vector<Mesh>& meshes, std::size_t segments, const 
                                              .number_of_partners(p.partners)
                                              .correspondence_distance(p.distance)
                                              .normal_threshold(p.normals)
+                                             .number_of_runs(p.runs)
                                              .number_of_threads(threads));
   run.seconds = seconds_since(start);
   for(std::size_t i = 0; i < meshes.size(); ++i) {
@@ -198,6 +205,9 @@ Json result_json(const CS::Consistent_segmentation_result& r)
   j["number_of_oversegments"] = r.number_of_oversegments;
   j["number_of_aligned_pairs"] = r.number_of_aligned_pairs;
   j["number_of_correspondences"] = r.number_of_correspondences;
+  j["number_of_runs"] = r.number_of_runs;
+  j["chosen_run"] = r.chosen_run;
+  j["run_disagreement"] = r.run_disagreement;
   j["mean_alignment_rms"] = r.mean_alignment_rms;
   Json meshes = Json::array();
   for(const auto& list : r.meshes_of_segment)
@@ -437,7 +447,7 @@ void usage(const char* name)
   std::cerr << "usage: " << name
             << " [--parts chairs16,chairs100,psb] [--classes Chair,Table,...] [--psb DIR]"
                " [--seed 1] [--coseg-seed 0] [--edge-length 0.042] [--runs 3] [--oversegments 20]"
-               " [--adjacency-exponent 0.1] [--points 1000] [--sweep o20,a0.1,p2000,...]"
+               " [--adjacency-exponent 0.1] [--points 1000] [--coseg-runs 4] [--sweep o20,a0.1,p2000,r1,...]"
                " [--segments auto] [--output FILE]\n";
 }
 
@@ -486,6 +496,8 @@ int main(int argc, char** argv)
         furniture.coseg.adjacency = std::stod(value());
       else if(arg == "--points")
         furniture.coseg.points = std::stoul(value());
+      else if(arg == "--coseg-runs")
+        furniture.coseg.runs = std::stoul(value());
       else if(arg == "--sweep")
         sweep_items = psb::split(value());
       else if(arg == "--segments") {

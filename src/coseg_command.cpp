@@ -301,6 +301,7 @@ int run_coseg(const Coseg_command_options& o)
                     .adjacency_exponent(co.adjacency_exponent)
                     .number_of_points(co.number_of_points)
                     .number_of_partners(co.number_of_partners)
+                    .number_of_runs(co.number_of_runs)
                     .normal_threshold(co.normal_threshold)
                     .correspondence_distance(co.correspondence_distance)
                     .concavity_exponent(co.concavity_exponent)
@@ -411,6 +412,7 @@ int run_coseg(const Coseg_command_options& o)
     parameters["number_of_oversegments"] = co.number_of_oversegments;
     parameters["number_of_points"] = co.number_of_points;
     parameters["number_of_partners"] = co.number_of_partners;
+    parameters["number_of_runs"] = co.number_of_runs;
     parameters["adjacency_exponent"] = co.adjacency_exponent;
     parameters["normal_threshold"] = co.normal_threshold;
     parameters["correspondence_distance"] = co.correspondence_distance;
@@ -444,6 +446,9 @@ int run_coseg(const Coseg_command_options& o)
     report["aligned_pairs"] = r.number_of_aligned_pairs;
     report["correspondences"] = r.number_of_correspondences;
     report["mean_alignment_rms"] = r.mean_alignment_rms;
+    report["runs"] = r.number_of_runs;
+    report["chosen_run"] = r.chosen_run;
+    report["run_disagreement"] = r.run_disagreement;
     stage_report(outputs, o.report, report, segment_seconds, read_seconds, total.seconds(),
                  {{"directory", o.output_dir}});
   }
@@ -505,6 +510,10 @@ void add_coseg_command(CLI::App& app, std::function<int()>& run,
   cmd->add_option("--partners", co.number_of_partners,
                   "Number of best-aligned partners whose correspondences each mesh keeps (twice "
                   "as many are aligned in large sets; 0: every pair)")
+    ->capture_default_str();
+  cmd->add_option("--runs", co.number_of_runs,
+                  "Number of runs of the alignments and merging, each with its own sample points, "
+                  "in [1, 1000]; the run that agrees most with the others is kept (use 3 or more)")
     ->capture_default_str();
   cmd->add_option("--adjacency-exponent", co.adjacency_exponent,
                   "Weight in [0, 1] of the mesh edges against the correspondences")

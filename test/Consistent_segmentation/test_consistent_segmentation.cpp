@@ -347,6 +347,81 @@ TEST(ChairSet, SameResultForAnyNumberOfThreadsAndSeedMatters)
   EXPECT_NE(a.number_of_correspondences, b.number_of_correspondences); // other samples
 }
 
+// ---------------------------------------------------------------------------------------------
+// Several runs
+
+TEST(Runs, RandDistanceIsTheChanceOfSplittingTwoPointsDifferently)
+{
+  const std::vector<double> area = {1.0, 1.0, 2.0};
+  EXPECT_DOUBLE_EQ(CS::internal::rand_distance(area, {0, 0, 1}, {5, 5, 7}), 0.0); // same, other ids
+  // {0,1 | 2} against {0 | 1,2}: pairs of points (by area, 4 in all) split in one, not the other:
+  // 0-1 and 1-2 both ways, 2 * (1 * 1 + 1 * 2) = 6 out of 16.
+  EXPECT_DOUBLE_EQ(CS::internal::rand_distance(area, {0, 0, 1}, {0, 1, 1}), 6.0 / 16.0);
+  EXPECT_DOUBLE_EQ(CS::internal::rand_distance(area, {0, 1, 1}, {0, 0, 1}), 6.0 / 16.0);
+  // Everything in one segment against each item alone: every pair of different items.
+  EXPECT_DOUBLE_EQ(CS::internal::rand_distance(area, {0, 0, 0}, {0, 1, 2}), (16.0 - 1 - 1 - 4) / 16.0);
+  // Items 1 and 2 only.
+  EXPECT_DOUBLE_EQ(CS::internal::rand_distance(area, {0, 0, 1}, {0, 1, 1}, 1, 3), 4.0 / 9.0);
+
+  // One minus the area-weighted Rand index of the benchmark's measure, on random segmentations.
+  SAI::Random_stream random(7, 0);
+  for(int trial = 0; trial < 20; ++trial) {
+    const std::size_t n = 5 + random.index(60);
+    std::vector<std::size_t> a(n), b(n);
+    std::vector<double> w(n);
+    for(std::size_t v = 0; v < n; ++v)
+      a[v] = random.index(4), b[v] = random.index(6), w[v] = 0.1 + random.uniform();
+    EXPECT_NEAR(CS::internal::rand_distance(w, a, b), 1.0 - SAS::rand_index(a, b, &w), 1e-12);
+  }
+}
+
+TEST(Runs, TheRunClosestToTheOthersIsKept)
+{
+  // Two meshes: over-segments 0-3 (unit areas) and 4-5 (areas 1 and 3).
+  const std::vector<double> area = {1, 1, 1, 1, 1, 3};
+  const std::vector<std::size_t> offset = {0, 4, 6};
+  const std::vector<std::vector<std::size_t>> ids = {
+    {0, 1, 2, 3, 0, 0}, // run 0: far from the others (32 / 16 in all)
+    {0, 0, 1, 1, 0, 1}, // runs 1 and 2 the same (16 / 16 each: the first of them is kept)
+    {5, 5, 6, 6, 2, 3},
+    {0, 0, 0, 1, 0, 1}, // run 3: an over-segment off runs 1 and 2 (24 / 16)
+  };
+  double disagreement = -1;
+  EXPECT_EQ(CS::internal::consensus_run(ids, area, offset, disagreement), 1u);
+  double sum = 0;
+  for(std::size_t t : {0u, 2u, 3u})
+    for(std::size_t i = 0; i < 2; ++i)
+      sum += CS::internal::rand_distance(area, ids[1], ids[t], offset[i], offset[i + 1]);
+  EXPECT_DOUBLE_EQ(disagreement, sum / 6.0);
+  EXPECT_DOUBLE_EQ(disagreement, (16.0 / 16.0) / 6.0);
+  // Of two runs, both as close to the other: the first.
+  EXPECT_EQ(CS::internal::consensus_run({ids[3], ids[0]}, area, offset, disagreement), 0u);
+  EXPECT_EQ(CS::internal::consensus_run({ids[2]}, area, offset, disagreement), 0u);
+  EXPECT_EQ(disagreement, 0.0);
+}
+
+TEST(Runs, RunZeroIsTheSeedsOwnAndRunsAgreeOnAnEasySet)
+{
+  const auto models = SAS::procedural_chair_set(6, 8, furniture(true));
+  CS::Consistent_segmentation_result one, two, four;
+  const auto single = cosegment(models, CS::parameters::number_of_segments(6).random_seed(4).number_of_runs(1), &one);
+  const auto first_of_two =
+    cosegment(models, CS::parameters::number_of_segments(6).random_seed(4).number_of_runs(2), &two);
+  const auto several = cosegment(models, CS::parameters::number_of_segments(6).random_seed(4), &four);
+  EXPECT_EQ(one.number_of_runs, 1u);
+  EXPECT_EQ(one.chosen_run, 0u);
+  EXPECT_EQ(one.run_disagreement, 0.0);
+  EXPECT_EQ(two.chosen_run, 0u); // the first of two
+  EXPECT_EQ(single, first_of_two);
+  EXPECT_EQ(one.number_of_correspondences, two.number_of_correspondences);
+  ASSERT_EQ(four.number_of_runs, CS::Consistent_segmentation_options().number_of_runs);
+  EXPECT_GT(four.number_of_runs, 2u);
+  EXPECT_LT(four.chosen_run, four.number_of_runs);
+  // Procedural chairs split the same way whatever the samples: the runs nearly agree.
+  EXPECT_LT(four.run_disagreement, 0.02);
+  expect_consistent_result(several, four);
+}
+
 TEST(ChairSet, SingleMeshAndProgress)
 {
   const auto models = SAS::procedural_chair_set(1, 8, furniture(false));
@@ -1033,7 +1108,7 @@ auto option_values(const CS::Consistent_segmentation_options& o)
                          o.component_link_distance, o.component_link_factor, o.boundary_refinement,
                          bool(o.progress_callback), o.number_of_oversegments, o.adjacency_exponent,
                          o.number_of_points, o.normal_threshold, o.correspondence_distance,
-                         o.number_of_partners, o.random_seed, o.number_of_threads);
+                         o.number_of_partners, o.number_of_runs, o.random_seed, o.number_of_threads);
 }
 
 // The options read from no named parameters are the struct's defaults, the first stage's those of
@@ -1049,12 +1124,13 @@ TEST(Parameters, OptionsFromNamedParameters)
 
   const auto given = CS::consistent_segmentation_options(
     CS::parameters::number_of_oversegments(7).adjacency_exponent(0.25).random_seed(5u).component_link_factor(0.5)
-      .progress_callback([](double) {}));
+      .number_of_runs(2).progress_callback([](double) {}));
   CS::Consistent_segmentation_options expected;
   expected.number_of_oversegments = 7;
   expected.adjacency_exponent = 0.25;
   expected.random_seed = 5;
   expected.component_link_factor = 0.5;
+  expected.number_of_runs = 2;
   expected.progress_callback = [](double) {};
   EXPECT_EQ(option_values(given), option_values(expected));
 }
@@ -1135,6 +1211,8 @@ TEST(BadInput, ParametersOutOfRange)
   expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::adjacency_exponent(std::nan(""))); },
                    "adjacency_exponent");
   expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::number_of_points(3)); }, "number_of_points");
+  expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::number_of_runs(0)); }, "number_of_runs");
+  expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::number_of_runs(1001)); }, "number_of_runs");
   expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::normal_threshold(2.0)); }, "normal_threshold");
   expect_bad_input([&] { CS::consistent_segmentation(meshes, maps, P::correspondence_distance(0.0)); },
                    "correspondence_distance");

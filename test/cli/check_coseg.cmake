@@ -31,7 +31,7 @@ endforeach()
 set(dir "${WORK}/out2/nested")
 file(READ "${WORK}/report2.json" report)
 foreach(key command seconds segments meshes_of_segment segment_area segment_label oversegments
-            aligned_pairs correspondences mean_alignment_rms)
+            aligned_pairs correspondences mean_alignment_rms runs chosen_run run_disagreement)
   string(JSON value ERROR_VARIABLE missing GET "${report}" ${key})
   if(missing)
     message(FATAL_ERROR "the report has no '${key}': ${report}")

@@ -56,6 +56,11 @@ struct Consistent_segmentation_options : Hierarchical_segmentation_options
   /// 2 `number_of_partners` meshes of most similar shape distribution; 0 aligns and keeps every
   /// pair (not used by `symmetric_segmentation()`)
   std::size_t number_of_partners = 4;
+  /// the number of runs of what follows the over-segmentation (sampling, alignments,
+  /// correspondences, merging), each with its own sample points, from 1 to 1,000; the result is the
+  /// run whose segmentation agrees most with the others' (of two runs, the first; see
+  /// `consistent_segmentation()`)
+  std::size_t number_of_runs = 4;
   /// the seed of the random numbers (sample points)
   std::uint64_t random_seed = 0;
   /// the largest number of threads used (with TBB); 0 for all cores. The result does not depend
@@ -89,6 +94,7 @@ consistent_segmentation_options(const NamedParameters& np = parameters::default_
   o.normal_threshold = parameter_value(np, snp::normal_threshold_tag, o.normal_threshold);
   o.correspondence_distance = parameter_value(np, snp::correspondence_distance_tag, o.correspondence_distance);
   o.number_of_partners = parameter_value(np, snp::number_of_partners_tag, o.number_of_partners);
+  o.number_of_runs = parameter_value(np, snp::number_of_runs_tag, o.number_of_runs);
   o.random_seed = parameter_value(np, CGAL::internal_np::random_seed, o.random_seed);
   o.number_of_threads = parameter_value(np, snp::number_of_threads_tag, o.number_of_threads);
   return o;

@@ -62,6 +62,15 @@ struct Consistent_segmentation_result
   /// The mean trimmed RMS distance of the aligned pairs, relative to the bounding-box diagonal of
   /// the target's sample points.
   double mean_alignment_rms = 0;
+  /// The number of runs of the sampling, alignments and merging (see `number_of_runs`).
+  std::size_t number_of_runs = 1;
+  /// The run returned (0 is the one whose sample points follow `random_seed` itself).
+  std::size_t chosen_run = 0;
+  /// The mean Rand distance between the returned segmentation of a mesh and another run's (the
+  /// probability that two points drawn on the mesh by area are in one segment in one run and in two
+  /// in the other), over the meshes and the other runs; 0 with one run. Near 0, the result hardly
+  /// depends on the sample points.
+  double run_disagreement = 0;
 
   /// Whether a segment occurs in a mesh.
   /// \param s a segment id
@@ -141,6 +150,9 @@ inline Consistent_segmentation_result to_result(const Coseg_result& r)
   result.number_of_aligned_pairs = r.number_of_aligned_pairs;
   result.number_of_correspondences = r.number_of_correspondences;
   result.mean_alignment_rms = r.mean_alignment_rms;
+  result.number_of_runs = r.number_of_runs;
+  result.chosen_run = r.chosen_run;
+  result.run_disagreement = r.run_disagreement;
   return result;
 }
 
@@ -212,6 +224,16 @@ The method works in two stages on the faces of all meshes:
    of the correspondence links, with \f$\alpha\f$ = `adjacency_exponent`; every 12 merges, single
    over-segments move to a neighbouring segment when that lowers \f$E\f$. Merging stops at
    `number_of_segments` segments in all.
+
+Everything after the over-segmentation (the sampling, the alignments, the correspondences and the
+merging) runs `number_of_runs` times, each run with its own sample points (the first with
+`random_seed`, the others with seeds derived from it); the result is the run whose segmentations
+are closest to the other runs', by the Rand distance summed over the meshes and the other runs (the
+first such run on a tie; of two runs, always the first). A single run's greedy merging can go astray on one set
+of samples; the run closest to the others is a consensus (on the Princeton Segmentation
+Benchmark's development sets, over 16 seeds, 4 runs lower the mean Rand Index error from 0.125
+to 0.119; see the manual). `Consistent_segmentation_result::run_disagreement` tells how much the
+runs differ.
 
 With `known_segment_maps`, some faces of some meshes have known labels (the same value meaning the
 same part in every mesh, negative values meaning unknown): faces of one label start in one segment
@@ -337,6 +359,15 @@ results that do not depend on the number of threads.
       of the mesh edges}
     \cgalParamType{`double`}
     \cgalParamDefault{`Consistent_segmentation_options::component_link_factor`}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_runs}
+    \cgalParamDescription{the number of runs of the sampling, alignments and merging, each with
+      its own sample points, from 1 to 1,000; the run closest to the others is returned. 1 is the
+      fastest and depends most on `random_seed`}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`Consistent_segmentation_options::number_of_runs`}
+    \cgalParamExtra{two runs are as close to each other: the first is returned, as with one run;
+      use three or more}
   \cgalParamNEnd
   \cgalParamNBegin{random_seed}
     \cgalParamDescription{the seed of the random numbers (sample points)}

@@ -49,6 +49,7 @@ namespace internal_np {
   X(number_of_oversegments_t, number_of_oversegments_tag, number_of_oversegments)    \
   X(adjacency_exponent_t, adjacency_exponent_tag, adjacency_exponent)                \
   X(number_of_partners_t, number_of_partners_tag, number_of_partners)                \
+  X(number_of_runs_t, number_of_runs_tag, number_of_runs)                            \
   X(normal_threshold_t, normal_threshold_tag, normal_threshold)                      \
   X(correspondence_distance_t, correspondence_distance_tag, correspondence_distance) \
   X(vertex_point_maps_t, vertex_point_maps_tag, vertex_point_maps)                   \

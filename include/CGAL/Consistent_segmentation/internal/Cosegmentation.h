@@ -154,6 +154,21 @@ inline std::vector<std::size_t> oversegment_offsets(const std::vector<std::vecto
   return offset;
 }
 
+// The area of every over-segment (numbered from `offset`) as a fraction of its mesh's.
+inline std::vector<double> oversegment_areas(const std::vector<Coseg_mesh>& meshes,
+                                             const std::vector<std::vector<std::size_t>>& over,
+                                             const std::vector<std::size_t>& offset)
+{
+  std::vector<double> size(offset.back(), 0.0);
+  for(std::size_t i = 0; i < meshes.size(); ++i) {
+    const SAI::Dual_graph& g = meshes[i].graph;
+    const double area = g.total_size();
+    for(std::size_t v = 0; v < g.number_of_nodes(); ++v)
+      size[offset[i] + over[i][v]] += g.node_size[v] / area;
+  }
+  return size;
+}
+
 // Gives `merging` the over-segments (their area fraction in `size`, their known label), their
 // adjacencies and the correspondences between them; returns the number of correspondences.
 inline std::size_t add_oversegment_graph(Joint_merging& merging, const std::vector<Coseg_mesh>& meshes,
@@ -164,17 +179,14 @@ inline std::size_t add_oversegment_graph(Joint_merging& merging, const std::vect
 {
   const std::size_t m = meshes.size();
   const std::size_t total = offset[m];
-  size.assign(total, 0.0);
+  size = oversegment_areas(meshes, over, offset);
   std::vector<long long> label(total, -1);
   for(std::size_t i = 0; i < m; ++i) {
     const SAI::Dual_graph& g = meshes[i].graph;
-    const double area = g.total_size();
-    const double length_scale = 1.0 / std::sqrt(area);
-    for(std::size_t v = 0; v < g.number_of_nodes(); ++v) {
-      size[offset[i] + over[i][v]] += g.node_size[v] / area;
+    const double length_scale = 1.0 / std::sqrt(g.total_size());
+    for(std::size_t v = 0; v < g.number_of_nodes(); ++v)
       if(!meshes[i].known.empty() && meshes[i].known[v] >= 0)
         label[offset[i] + over[i][v]] = meshes[i].known[v];
-    }
     for(std::size_t e = 0; e < g.number_of_edges(); ++e) {
       const std::size_t a = over[i][g.edge_source[e]], b = over[i][g.edge_target[e]];
       if(a != b)
@@ -256,13 +268,109 @@ inline void number_segments(const Joint_merging& merging, const std::vector<Cose
   }
 }
 
+// Stages two and three for the over-segments `over`: samples (from `o.random_seed`), alignments,
+// correspondences, and the joint merging down to `target` segments. `report` gets the progress
+// from 0 to 1.
+template <typename Report>
+Coseg_result link_and_merge(const std::vector<Coseg_mesh>& meshes, const std::vector<std::vector<std::size_t>>& over,
+                            const std::vector<std::size_t>& offset, std::size_t target, const Coseg_options& o,
+                            const Report& report)
+{
+  Coseg_result result;
+  std::vector<Surface_sample> samples;
+  std::vector<SAI::Point_tree> trees;
+  sample_meshes(meshes, o, samples, trees);
+  const std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs = pairs_to_align(samples, o);
+  std::vector<std::vector<Correspondence>> links;
+  std::vector<double> pair_rms;
+  link_meshes(meshes, samples, trees, pairs, over, o, links, pair_rms);
+  report(0.5);
+  result.number_of_aligned_pairs = pairs.size();
+  for(double r : pair_rms)
+    result.mean_alignment_rms += r / double((std::max)(std::size_t(1), pairs.size()));
+
+  const std::size_t total = offset[meshes.size()];
+  result.number_of_oversegments = total;
+  Joint_merging merging(total, o.adjacency_exponent);
+  std::vector<double> size;
+  result.number_of_correspondences = add_oversegment_graph(merging, meshes, over, offset, links, size);
+  merging.run(target, refinement_interval, o.boundary_refinement, [&](double f) { report(0.5 + 0.5 * f); });
+  number_segments(merging, meshes, over, offset, size, result);
+  return result;
+}
+
+// The segment id of every over-segment (numbered from `offset`) in `result`, whose per-node labels
+// are then dropped (a run's result takes little memory until it is chosen).
+inline std::vector<std::size_t> oversegment_ids(Coseg_result& result, const std::vector<std::vector<std::size_t>>& over,
+                                                const std::vector<std::size_t>& offset)
+{
+  std::vector<std::size_t> ids(offset.back(), 0);
+  for(std::size_t i = 0; i < over.size(); ++i)
+    for(std::size_t v = 0; v < over[i].size(); ++v)
+      ids[offset[i] + over[i][v]] = result.labels[i][v];
+  std::vector<std::vector<std::size_t>>().swap(result.labels);
+  return ids;
+}
+
+// The area-weighted Rand distance between two segmentations `a` and `b` of the items `first` to
+// `last` (excluded) of areas `area`: the probability that two points drawn on them by area lie in
+// one segment of one segmentation and in two segments of the other.
+inline double rand_distance(const std::vector<double>& area, const std::vector<std::size_t>& a,
+                            const std::vector<std::size_t>& b, std::size_t first = 0,
+                            std::size_t last = (std::numeric_limits<std::size_t>::max)())
+{
+  last = (std::min)(last, area.size());
+  std::map<std::size_t, double> in_a, in_b;
+  std::map<std::pair<std::size_t, std::size_t>, double> in_both;
+  double total = 0;
+  for(std::size_t v = first; v < last; ++v) {
+    in_a[a[v]] += area[v];
+    in_b[b[v]] += area[v];
+    in_both[{a[v], b[v]}] += area[v];
+    total += area[v];
+  }
+  if(!(total > 0))
+    return 0.0;
+  double d = 0;
+  for(const auto& kv : in_a)
+    d += kv.second * kv.second;
+  for(const auto& kv : in_b)
+    d += kv.second * kv.second;
+  for(const auto& kv : in_both)
+    d -= 2 * kv.second * kv.second;
+  return (std::max)(0.0, d / (total * total));
+}
+
+// Of the runs' segment ids per over-segment (`ids[r]`; over-segments of areas `area`, mesh i's
+// from offset[i] to offset[i + 1]), the run closest to the others (least Rand distance summed over
+// the other runs and the meshes; the first on a tie, so of two runs the first), and in
+// `disagreement` its mean distance to another run's segmentation of a mesh (0 with one run).
+inline std::size_t consensus_run(const std::vector<std::vector<std::size_t>>& ids, const std::vector<double>& area,
+                                 const std::vector<std::size_t>& offset, double& disagreement)
+{
+  const std::size_t n = ids.size(), m = offset.size() - 1;
+  disagreement = 0;
+  if(n < 2 || m == 0)
+    return 0;
+  std::vector<double> sum(n, 0.0);
+  for(std::size_t r = 0; r < n; ++r)
+    for(std::size_t t = r + 1; t < n; ++t)
+      for(std::size_t i = 0; i < m; ++i) {
+        const double d = rand_distance(area, ids[r], ids[t], offset[i], offset[i + 1]);
+        sum[r] += d;
+        sum[t] += d;
+      }
+  const std::size_t best = std::size_t(std::min_element(sum.begin(), sum.end()) - sum.begin());
+  disagreement = sum[best] / double((n - 1) * m);
+  return best;
+}
+
 // ---------------------------------------------------------------------------------------------
 // The whole computation.
 
 inline Coseg_result cosegment(std::vector<Coseg_mesh>& meshes, const Coseg_options& o)
 {
   const std::size_t m = meshes.size();
-  Coseg_result result;
   auto report = [&](double f) {
     if(o.progress_callback)
       o.progress_callback(f);
@@ -291,32 +399,34 @@ inline Coseg_result cosegment(std::vector<Coseg_mesh>& meshes, const Coseg_optio
 
   const std::size_t target = o.number_of_segments == 0 ? automatic_set_count(meshes, o) : o.number_of_segments;
   const std::vector<std::vector<std::size_t>> over = oversegment_meshes(meshes, o);
+  const std::vector<std::size_t> offset = oversegment_offsets(over);
   report(0.2);
 
-  // Samples, partners, alignments and correspondences.
-  std::vector<Surface_sample> samples;
-  std::vector<SAI::Point_tree> trees;
-  sample_meshes(meshes, o, samples, trees);
-  const std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs = pairs_to_align(samples, o);
-  std::vector<std::vector<Correspondence>> links;
-  std::vector<double> pair_rms;
-  link_meshes(meshes, samples, trees, pairs, over, o, links, pair_rms);
-  report(0.6);
-  result.number_of_aligned_pairs = pairs.size();
-  for(double r : pair_rms)
-    result.mean_alignment_rms += r / double((std::max)(std::size_t(1), pairs.size()));
-
-  const std::vector<std::size_t> offset = oversegment_offsets(over);
-  const std::size_t total = offset[m];
-  result.number_of_oversegments = total;
-  Joint_merging merging(total, o.adjacency_exponent);
-  std::vector<double> size;
-  result.number_of_correspondences = add_oversegment_graph(merging, meshes, over, offset, links, size);
-
-  merging.run(target, refinement_interval, o.boundary_refinement,
-              [&](double f) { report(0.6 + 0.4 * f); });
-
-  number_segments(merging, meshes, over, offset, size, result);
+  // Stages two and three once per run, each with its own sample points (the first with
+  // random_seed itself); the result is the run closest to the others.
+  const std::size_t runs = (std::max)(std::size_t(1), o.number_of_runs);
+  std::vector<Coseg_result> results(runs);
+  std::vector<std::vector<std::size_t>> ids(runs);
+  for(std::size_t r = 0; r < runs; ++r) {
+    Coseg_options ro = o;
+    if(r > 0)
+      ro.random_seed = SAI::Random_stream::mix(o.random_seed ^ 0x52756E73ull) + r;
+    results[r] = link_and_merge(meshes, over, offset, target, ro,
+                                [&](double f) { report(0.2 + 0.79 * (double(r) + f) / double(runs)); });
+    ids[r] = oversegment_ids(results[r], over, offset);
+  }
+  double disagreement = 0;
+  const std::size_t chosen = consensus_run(ids, oversegment_areas(meshes, over, offset), offset, disagreement);
+  Coseg_result result = std::move(results[chosen]);
+  result.labels.resize(m);
+  for(std::size_t i = 0; i < m; ++i) {
+    result.labels[i].resize(over[i].size());
+    for(std::size_t v = 0; v < over[i].size(); ++v)
+      result.labels[i][v] = ids[chosen][offset[i] + over[i][v]];
+  }
+  result.number_of_runs = runs;
+  result.chosen_run = chosen;
+  result.run_disagreement = disagreement;
   report(1.0);
   return result;
 }

@@ -55,11 +55,16 @@ struct Coseg_result
   std::size_t number_of_aligned_pairs = 0;
   std::size_t number_of_correspondences = 0;
   double mean_alignment_rms = 0;                         // relative to the target's sample diagonal
+  std::size_t number_of_runs = 1;                        // of stages two and three
+  std::size_t chosen_run = 0;                            // the one returned
+  double run_disagreement = 0;                           // its mean Rand distance to the others
 };
 
 inline void check_coseg_options(const Coseg_options& o, const std::string& who)
 {
   using CGAL::Shape_analysis::Bad_input;
+  if(o.number_of_runs < 1 || o.number_of_runs > 1000)
+    throw Bad_input(who + ": number_of_runs must be in [1, 1000]");
   if(o.number_of_oversegments == 0)
     throw Bad_input(who + ": number_of_oversegments must be at least 1");
   if(!(o.adjacency_exponent >= 0 && o.adjacency_exponent <= 1))
