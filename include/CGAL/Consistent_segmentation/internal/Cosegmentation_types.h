@@ -63,8 +63,6 @@ struct Coseg_result
 inline void check_coseg_options(const Coseg_options& o, const std::string& who)
 {
   using CGAL::Shape_analysis::Bad_input;
-  if(o.number_of_runs < 1 || o.number_of_runs > 1000)
-    throw Bad_input(who + ": number_of_runs must be in [1, 1000]");
   if(o.number_of_oversegments == 0)
     throw Bad_input(who + ": number_of_oversegments must be at least 1");
   if(!(o.adjacency_exponent >= 0 && o.adjacency_exponent <= 1))
@@ -75,6 +73,8 @@ inline void check_coseg_options(const Coseg_options& o, const std::string& who)
     throw Bad_input(who + ": normal_threshold must be in [-1, 1)");
   if(!(o.correspondence_distance > 0) || !std::isfinite(o.correspondence_distance))
     throw Bad_input(who + ": correspondence_distance must be a finite number > 0");
+  if(o.number_of_runs < 1 || o.number_of_runs > 1000)
+    throw Bad_input(who + ": number_of_runs must be in [1, 1000]");
   check_options(o, (std::numeric_limits<std::size_t>::max)(), who, true); // 0: automatic
 }
 
