@@ -169,17 +169,16 @@ inline std::vector<double> oversegment_areas(const std::vector<Coseg_mesh>& mesh
   return size;
 }
 
-// Gives `merging` the over-segments (their area fraction in `size`, their known label), their
-// adjacencies and the correspondences between them; returns the number of correspondences.
+// Gives `merging` the over-segments (their area fractions `size`, see oversegment_areas(), and
+// their known labels), their adjacencies and the correspondences between them; returns the number
+// of correspondences.
 inline std::size_t add_oversegment_graph(Joint_merging& merging, const std::vector<Coseg_mesh>& meshes,
                                          const std::vector<std::vector<std::size_t>>& over,
-                                         const std::vector<std::size_t>& offset,
-                                         const std::vector<std::vector<Correspondence>>& links,
-                                         std::vector<double>& size)
+                                         const std::vector<std::size_t>& offset, const std::vector<double>& size,
+                                         const std::vector<std::vector<Correspondence>>& links)
 {
   const std::size_t m = meshes.size();
   const std::size_t total = offset[m];
-  size = oversegment_areas(meshes, over, offset);
   std::vector<long long> label(total, -1);
   for(std::size_t i = 0; i < m; ++i) {
     const SAI::Dual_graph& g = meshes[i].graph;
@@ -268,13 +267,13 @@ inline void number_segments(const Joint_merging& merging, const std::vector<Cose
   }
 }
 
-// Stages two and three for the over-segments `over`: samples (from `o.random_seed`), alignments,
-// correspondences, and the joint merging down to `target` segments. `report` gets the progress
-// from 0 to 1.
+// Stages two and three for the over-segments `over` (area fractions `size`): samples (from
+// `o.random_seed`), alignments, correspondences, and the joint merging down to `target` segments.
+// `report` gets the progress from 0 to 1.
 template <typename Report>
 Coseg_result link_and_merge(const std::vector<Coseg_mesh>& meshes, const std::vector<std::vector<std::size_t>>& over,
-                            const std::vector<std::size_t>& offset, std::size_t target, const Coseg_options& o,
-                            const Report& report)
+                            const std::vector<std::size_t>& offset, const std::vector<double>& size,
+                            std::size_t target, const Coseg_options& o, const Report& report)
 {
   Coseg_result result;
   std::vector<Surface_sample> samples;
@@ -292,8 +291,7 @@ Coseg_result link_and_merge(const std::vector<Coseg_mesh>& meshes, const std::ve
   const std::size_t total = offset[meshes.size()];
   result.number_of_oversegments = total;
   Joint_merging merging(total, o.adjacency_exponent);
-  std::vector<double> size;
-  result.number_of_correspondences = add_oversegment_graph(merging, meshes, over, offset, links, size);
+  result.number_of_correspondences = add_oversegment_graph(merging, meshes, over, offset, size, links);
   merging.run(target, refinement_interval, o.boundary_refinement, [&](double f) { report(0.5 + 0.5 * f); });
   number_segments(merging, meshes, over, offset, size, result);
   return result;
@@ -400,6 +398,7 @@ inline Coseg_result cosegment(std::vector<Coseg_mesh>& meshes, const Coseg_optio
   const std::size_t target = o.number_of_segments == 0 ? automatic_set_count(meshes, o) : o.number_of_segments;
   const std::vector<std::vector<std::size_t>> over = oversegment_meshes(meshes, o);
   const std::vector<std::size_t> offset = oversegment_offsets(over);
+  const std::vector<double> size = oversegment_areas(meshes, over, offset);
   report(0.2);
 
   // Stages two and three once per run, each with its own sample points (the first with
@@ -411,12 +410,12 @@ inline Coseg_result cosegment(std::vector<Coseg_mesh>& meshes, const Coseg_optio
     Coseg_options ro = o;
     if(r > 0)
       ro.random_seed = SAI::Random_stream::mix(o.random_seed ^ 0x52756E73ull) + r;
-    results[r] = link_and_merge(meshes, over, offset, target, ro,
+    results[r] = link_and_merge(meshes, over, offset, size, target, ro,
                                 [&](double f) { report(0.2 + 0.79 * (double(r) + f) / double(runs)); });
     ids[r] = oversegment_ids(results[r], over, offset);
   }
   double disagreement = 0;
-  const std::size_t chosen = consensus_run(ids, oversegment_areas(meshes, over, offset), offset, disagreement);
+  const std::size_t chosen = consensus_run(ids, size, offset, disagreement);
   Coseg_result result = std::move(results[chosen]);
   result.labels.resize(m);
   for(std::size_t i = 0; i < m; ++i) {
