@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_symmetrization/symmetric_remeshing.h>
 #include <CGAL/Surface_mesh_symmetrization/symmetric_simplification.h>
 #include <CGAL/Surface_mesh_symmetrization/symmetrize.h>
+#include <CGAL/Surface_mesh_symmetrization/internal/Restore_splits.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Surface_index.h>
 #include <CGAL/Surface_mesh_symmetrization/internal/Symmetric_flips.h>
 #include <CGAL/Shape_analysis/internal/Point_tree.h>
@@ -25,8 +26,10 @@
 
 #include "mesh_distance_checks.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -435,6 +438,62 @@ TEST(SymmetricSimplification, RefinementFollowsTheInputAndStaysMirrored)
   std::vector<std::uint32_t> p2(c.mirror_vertex.begin(), c.mirror_vertex.end());
   EXPECT_EQ(SYI::refine_restored(s2, r2, p2, index, symmetrized, residuals, 0.002 * diagonal, faces, 3), 0u);
   EXPECT_EQ(s2.triangles.size(), faces);
+}
+
+// The splits that spend the restore's last faces: a coarse mesh of symmetric connectivity, its
+// points moved onto a warped fine ellipsoid, split where it is farthest from that surface. The
+// face count stays within the budget, the connectivity mirrored by the pairs (new points paired
+// mutually), the new points on the warped surface, the mesh closed; the largest distance drops;
+// the same result with one thread and with two.
+TEST(SymmetricSimplification, FarthestSplitsFollowTheInputAndStayMirrored)
+{
+  Mesh coarse = ellipsoid(8, 12, 0.0, 3);
+  SY::symmetric_remeshing(coarse, y_reflection);
+  const SY::Symmetric_connectivity c = SY::measure_symmetric_connectivity(coarse, y_reflection);
+  ASSERT_EQ(c.symmetric_edges, 1.0);
+  Mesh input = ellipsoid(40, 64, 0.0, 4);
+  for(auto v : vertices(input)) {
+    const Point p = input.point(v);
+    const auto q = SAS::asymmetric_warp({{p.x(), p.y(), p.z()}}, 0.08);
+    input.point(v) = Point(q[0], q[1], q[2]);
+  }
+  const SYI::Surface_index reference(surface_of(input));
+  SYI::Surface start = surface_of(coarse);
+  SYI::snap_onto(start, reference, 0.0);
+  const double diagonal = reference.surface().diagonal();
+  const double before = SYI::sampled_hausdorff(SYI::Surface_index(start), reference, 1);
+  const std::size_t budget = start.triangles.size() * 3 / 2;
+  SYI::Surface one = start, two = start;
+  std::vector<std::uint32_t> partner_one(c.mirror_vertex.begin(), c.mirror_vertex.end()), partner_two = partner_one;
+  const std::size_t added = SYI::split_farthest(one, partner_one, reference, budget, 4, 8, 1);
+  SYI::split_farthest(two, partner_two, reference, budget, 4, 8, 2);
+  EXPECT_GT(added, 0u);
+  EXPECT_LE(one.triangles.size(), budget);
+  EXPECT_GT(one.triangles.size(), budget - 12) << "the budget is spent";
+  EXPECT_EQ(one.triangles, two.triangles);
+  EXPECT_EQ(partner_one, partner_two);
+  for(std::size_t i = 0; i < one.points.size(); ++i)
+    ASSERT_EQ((one.points[i] - two.points[i]).length(), 0.0) << i;
+  ASSERT_EQ(partner_one.size(), one.points.size());
+  std::set<std::array<std::uint32_t, 3>> faces;
+  const auto sorted = [](std::array<std::uint32_t, 3> t) {
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  for(const auto& t : one.triangles)
+    faces.insert(sorted(t));
+  for(const auto& t : one.triangles)
+    EXPECT_EQ(faces.count(sorted({{partner_one[t[0]], partner_one[t[1]], partner_one[t[2]]}})), 1u) << "mirror face";
+  for(std::size_t i = 0; i < partner_one.size(); ++i)
+    ASSERT_EQ(partner_one[partner_one[i]], i) << "pairs are mutual";
+  for(std::size_t i = start.points.size(); i < one.points.size(); ++i)
+    EXPECT_LT(std::sqrt(reference.closest(one.points[i]).squared_distance), 1e-9 * diagonal) << i;
+  Mesh split;
+  SYI::rebuild_mesh(split, one, SY::parameters::default_values());
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(split));
+  EXPECT_TRUE(CGAL::is_closed(split));
+  const double now = SYI::sampled_hausdorff(SYI::Surface_index(one), reference, 1);
+  EXPECT_LT(now, 0.8 * before) << before;
 }
 
 // The snap of the finer restore pass: points of an ellipsoid pushed off it along their normals by
