@@ -350,12 +350,13 @@ std::size_t restore_and_decimate(Surface& out, std::vector<std::uint32_t>& partn
   const std::size_t flips = flip(out, partner);
   snap_onto(out, input_index, restore_snap_distance * symmetrized.diagonal());
   split_farthest(out, partner, input_index, faces, restore_split_rounds, restore_split_grid, threads);
-  if(sampled_hausdorff(Surface_index(out), input_index, threads, restore_choice_grid) <
-     sampled_hausdorff(Surface_index(whole), input_index, threads, restore_choice_grid)) {
-    distance = sampled_hausdorff(Surface_index(out), input_index, threads);
+  const Surface_index split_index(out), whole_index(whole);
+  if(sampled_hausdorff(split_index, input_index, threads, restore_choice_grid) <
+     sampled_hausdorff(whole_index, input_index, threads, restore_choice_grid)) {
+    distance = sampled_hausdorff(split_index, input_index, threads);
     return flips;
   }
-  distance = sampled_hausdorff(Surface_index(whole), input_index, threads);
+  distance = sampled_hausdorff(whole_index, input_index, threads);
   out = std::move(whole);
   partner = std::move(whole_partner);
   return whole_flips;

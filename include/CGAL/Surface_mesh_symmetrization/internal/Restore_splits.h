@@ -135,12 +135,15 @@ struct Face_distances
       if(q.found)
         hint = q.face, distance[i] = q.squared_distance, nearest[i] = q.face;
     });
+    std::vector<std::size_t> farthest(s.triangles.size(), reference_points.size());
     for(std::size_t i = 0; i < distance.size(); ++i)
-      if(distance[i] > back[nearest[i]]) {
-        back[nearest[i]] = distance[i];
-        back_point[nearest[i]] = reference_points[i];
-        const auto c = s.corners(nearest[i]);
-        closest_point_on_triangle(reference_points[i], c[0], c[1], c[2], back_barycentric[nearest[i]]);
+      if(distance[i] > back[nearest[i]])
+        back[nearest[i]] = distance[i], farthest[nearest[i]] = i;
+    for(std::size_t f = 0; f < s.triangles.size(); ++f)
+      if(farthest[f] < reference_points.size()) {
+        const auto c = s.corners(f);
+        back_point[f] = reference_points[farthest[f]];
+        closest_point_on_triangle(back_point[f], c[0], c[1], c[2], back_barycentric[f]);
       }
   }
 
@@ -183,7 +186,8 @@ inline Farthest_splits choose_farthest_splits(const Surface& s, const std::vecto
     // The faces the split touches: f's mirror face, or the faces of the longest edge and its mirror.
     std::vector<std::uint32_t> touched;
     std::array<std::uint32_t, 2> pair{{no_partner, no_partner}};
-    if(d.back[f] >= d.own[f]) {
+    const bool insert_point = d.back[f] >= d.own[f];
+    if(insert_point) {
       const std::uint32_t m = edges.mirror(edges.of_face[f][0], partner), c = partner[s.triangles[f][2]];
       for(std::uint32_t g : m == no_partner ? std::array<std::uint32_t, 2>{{no_partner, no_partner}} : faces_of[m])
         if(g != no_partner && c != no_partner && std::count(s.triangles[g].begin(), s.triangles[g].end(), c) > 0)
@@ -214,7 +218,7 @@ inline Farthest_splits choose_farthest_splits(const Surface& s, const std::vecto
       continue;
     for(std::uint32_t g : touched)
       used[g] = 1;
-    if(d.back[f] >= d.own[f]) {
+    if(insert_point) {
       out.point_splits.emplace_back(pair[0], pair[1]);
       out.new_faces += 4;
     } else {
