@@ -60,7 +60,7 @@ struct Consistent_segmentation_options : Hierarchical_segmentation_options
   /// correspondences, merging), each with its own sample points, from 1 to 1,000; the result is the
   /// run whose segmentation agrees most with the others' (of two runs, the first; see
   /// `consistent_segmentation()`)
-  std::size_t number_of_runs = 4;
+  std::size_t number_of_runs = 6;
   /// the seed of the random numbers (sample points)
   std::uint64_t random_seed = 0;
   /// the largest number of threads used (with TBB); 0 for all cores. The result does not depend
