@@ -15,7 +15,8 @@
 // Meshes: CGAL's (--meshes, default cow, camel, armadillo) and the PSB subset in
 // ../shared/data/psb (--psb DIR; --classes, --ids select; skipped when absent).
 //   bench_symmetric_remeshing [--data DIR] [--meshes a,b] [--psb DIR] [--classes c,d] [--ids 1-8]
-//       [--no-psb] [--no-simplification] [--threads N] [--output FILE]
+//       [--no-psb] [--no-simplification] [--threads N] [--target-error E] [--output FILE]
+// (--target-error: symmetrize()'s target_symmetry_error, its default unless given)
 
 #include "psb_io.h"
 
@@ -126,7 +127,8 @@ SAS::Json simplify(const Mesh& input, const Symmetry& s, double diagonal, std::s
   return j;
 }
 
-SAS::Json run(const std::string& name, const Mesh& input, bool simplification, std::size_t threads)
+SAS::Json run(const std::string& name, const Mesh& input, bool simplification, std::size_t threads,
+              double target_error)
 {
   SAS::Json j = SAS::Json::object();
   j["mesh"] = name;
@@ -146,7 +148,8 @@ SAS::Json run(const std::string& name, const Mesh& input, bool simplification, s
   const double diagonal = diagonal_of(input);
   Mesh symmetrized = input;
   start = std::chrono::steady_clock::now();
-  const auto sr = SY::symmetrize(symmetrized, std::vector<Symmetry>{s}, SY::parameters::number_of_threads(threads));
+  const auto sr = SY::symmetrize(symmetrized, std::vector<Symmetry>{s},
+                                 SY::parameters::number_of_threads(threads).target_symmetry_error(target_error));
   j["symmetrize_seconds"] = seconds_since(start);
   j["symmetry_error_after"] = sr.symmetry_error_after;
   j["symmetrized_hausdorff_to_input"] = SAS::mesh_distance(symmetrized, input, diagonal).hausdorff;
@@ -173,6 +176,7 @@ int main(int argc, char** argv)
   std::set<int> ids;
   bool with_psb = true, simplification = true;
   std::size_t threads = 0;
+  double target_error = SY::Symmetrize_options().target_symmetry_error;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
@@ -193,17 +197,21 @@ int main(int argc, char** argv)
       simplification = false;
     else if(a == "--threads" && has_value)
       threads = std::stoul(argv[++i]);
+    else if(a == "--target-error" && has_value)
+      target_error = std::stod(argv[++i]);
     else if(a == "--output" && has_value)
       output = argv[++i];
     else {
       std::cerr << "usage: bench_symmetric_remeshing [--data DIR] [--meshes a,b] [--psb DIR] [--classes c,d] "
-                   "[--ids 1-8] [--no-psb] [--no-simplification] [--threads N] [--output FILE]\n";
+                   "[--ids 1-8] [--no-psb] [--no-simplification] [--threads N] [--target-error E] "
+                   "[--output FILE]\n";
       return 2;
     }
   }
   SAS::Json report = SAS::Json::object();
   report["benchmark"] = "symmetric_remeshing";
   report["threads"] = threads;
+  report["target_symmetry_error"] = target_error;
   SAS::Json cgal = SAS::Json::array();
   for(const std::string& name : names) {
     Mesh m;
@@ -211,7 +219,7 @@ int main(int argc, char** argv)
       std::cerr << "cannot read " << data << "/" << name << ".off\n";
       return 1;
     }
-    cgal.push_back(run(name, m, simplification, threads));
+    cgal.push_back(run(name, m, simplification, threads, target_error));
   }
   report["cgal_meshes"] = cgal;
   SAS::Json psb_meshes = SAS::Json::array();
@@ -221,7 +229,7 @@ int main(int argc, char** argv)
       std::string note;
       if(!psb::read_mesh(e.off, m, note))
         continue;
-      SAS::Json j = run(std::to_string(e.id), m, simplification, threads);
+      SAS::Json j = run(std::to_string(e.id), m, simplification, threads, target_error);
       j["class"] = e.mesh_class;
       psb_meshes.push_back(j);
     }
