@@ -221,6 +221,7 @@ constexpr double restore_snap_distance = 2e-4;
 constexpr int restore_split_rounds = 8;
 constexpr std::uint32_t restore_split_grid = 8;
 constexpr std::uint32_t restore_choice_grid = 6;
+static_assert(restore_choice_grid % 3 == 0, "the choice's grid holds the grid of 3 of the distances");
 
 // Per vertex of `s` (the restored meta-mesh), the quadric of the planes of the input faces its
 // faces lie on (each face mapped by `index`, the input's, to the input face nearest to its
@@ -262,28 +263,38 @@ inline std::vector<Symmetric_decimator::Quadric> provenance_quadrics(const Surfa
 // An estimate of the two-sided Hausdorff distance between the surfaces of `a` and `b`: the largest
 // distance to the other surface of the points of every face at barycentric coordinates (i, j, k) /
 // `grid` (Surface_index::samples_of(); a grid of 3: its corners, two points on each edge and its
-// centroid). Faces in parallel; the result does not depend on the number of threads.
+// centroid). With `coarse`, a multiple of 3 as `grid`, and in `coarse` the estimate on the grid of
+// 3 (the points of the grid whose coordinates are multiples of grid / 3: the same points), from
+// the same pass. Faces in parallel; the result does not depend on the number of threads.
 inline double sampled_hausdorff(const Surface_index& a, const Surface_index& b, std::size_t threads,
-                                std::uint32_t grid = 3)
+                                std::uint32_t grid = 3, double* coarse = nullptr)
 {
-  double largest = 0;
+  std::vector<char> on_coarse; // per point of a face's grid, numbered as samples_of() does
+  for(std::uint32_t i = 0; i <= grid; ++i)
+    for(std::uint32_t k = 0; i + k <= grid; ++k)
+      on_coarse.push_back(grid % 3 == 0 && i % (grid / 3) == 0 && k % (grid / 3) == 0);
+  double largest = 0, largest_coarse = 0;
   for(const auto* pair : {&a, &b}) {
     const Surface& s = pair->surface();
     const Surface_index& other = pair == &a ? b : a;
-    std::vector<double> d(s.triangles.size(), 0);
+    std::vector<double> d(s.triangles.size(), 0), d_coarse(s.triangles.size(), 0);
     SAI::Parallel_workspaces<std::uint32_t> hints(threads);
     hints.for_each(0, s.triangles.size(), [&](std::size_t f, std::uint32_t& hint) {
-      Surface_index::samples_of(s.corners(f), grid, [&](const Vector_3d& p, std::uint32_t) {
+      Surface_index::samples_of(s.corners(f), grid, [&](const Vector_3d& p, std::uint32_t number) {
         const Surface_point q = other.closest(p, hint);
         if(q.found) {
           hint = q.face;
           d[f] = (std::max)(d[f], q.squared_distance);
+          if(on_coarse[number])
+            d_coarse[f] = (std::max)(d_coarse[f], q.squared_distance);
         }
       });
     });
-    for(double x : d)
-      largest = (std::max)(largest, x);
+    for(std::size_t f = 0; f < d.size(); ++f)
+      largest = (std::max)(largest, d[f]), largest_coarse = (std::max)(largest_coarse, d_coarse[f]);
   }
+  if(coarse)
+    *coarse = std::sqrt(largest_coarse);
   return std::sqrt(largest);
 }
 
@@ -335,7 +346,8 @@ std::size_t restore_and_decimate(Surface& out, std::vector<std::uint32_t>& partn
   // The decimated mesh's diagonals turned towards the input's creases.
   const auto flip = [&](Surface& s, const std::vector<std::uint32_t>& pairs) {
     Symmetric_flipper flipper(s, pairs, input_index);
-    const std::size_t n = flipper.flip(restore_flip_gain, restore_flip_floor * symmetrized.diagonal(), restore_flip_rounds);
+    const std::size_t n =
+      flipper.flip(restore_flip_gain, restore_flip_floor * symmetrized.diagonal(), restore_flip_rounds);
     flipper.export_surface(s);
     return n;
   };
@@ -350,13 +362,15 @@ std::size_t restore_and_decimate(Surface& out, std::vector<std::uint32_t>& partn
   const std::size_t flips = flip(out, partner);
   snap_onto(out, input_index, restore_snap_distance * symmetrized.diagonal());
   split_farthest(out, partner, input_index, faces, restore_split_rounds, restore_split_grid, threads);
+  // Chosen on the finer grid; `distance` on the grid of 3 that compares the candidates.
+  double split_distance = 0, whole_distance = 0;
   const Surface_index split_index(out), whole_index(whole);
-  if(sampled_hausdorff(split_index, input_index, threads, restore_choice_grid) <
-     sampled_hausdorff(whole_index, input_index, threads, restore_choice_grid)) {
-    distance = sampled_hausdorff(split_index, input_index, threads);
+  if(sampled_hausdorff(split_index, input_index, threads, restore_choice_grid, &split_distance) <
+     sampled_hausdorff(whole_index, input_index, threads, restore_choice_grid, &whole_distance)) {
+    distance = split_distance;
     return flips;
   }
-  distance = sampled_hausdorff(whole_index, input_index, threads);
+  distance = whole_distance;
   out = std::move(whole);
   partner = std::move(whole_partner);
   return whole_flips;
@@ -415,8 +429,8 @@ void restore_closest_candidate(const Work& work, const Symmetry<Kernel>& symmetr
   const auto evaluate = [&](const Remeshed& m, const Restore_pass& pass, double& distance) {
     Surface candidate = m.surface;
     std::vector<std::uint32_t> partner = m.partner;
-    const std::size_t flips =
-      restore_and_decimate(candidate, partner, index, symmetrized, residuals, input, input_index, faces, pass, threads, distance);
+    const std::size_t flips = restore_and_decimate(candidate, partner, index, symmetrized, residuals, input,
+                                                   input_index, faces, pass, threads, distance);
     if(found && !(distance < best))
       return false;
     found = true;
@@ -485,7 +499,8 @@ mirrored. The decimation is also carried on to 95% of `number_of_faces`, its poi
 than \f$2 \cdot 10^{-4}\f$ of the diagonal from the input moved onto it, and the faces left
 spent where it is farthest from the input (in eight rounds, a face whose farthest point is the
 input's gets that point as a vertex, the others their longest edge split, each with its mirror
-face or edge, the new points on the input); of the two, the one closer to the input is kept. Where the two sides' connectivity differs, the remeshing copies one side's faces over
+face or edge, the new points on the input); of the two, the one closer to the input is kept.
+Where the two sides' connectivity differs, the remeshing copies one side's faces over
 the other's, and restored, one side's copy may follow the other side's creases better than the
 reverse, and the copy of a whole side (`copy_one_side`), whose faces are the input's own there,
 better than both: with `restore_residuals`, all of the above runs four times, remeshing and
