@@ -21,11 +21,11 @@
 #include <CGAL/Point_set_object_recognition/recognize_objects.h>
 #include <CGAL/Point_set_object_recognition/remove_background.h>
 #include <CGAL/Point_set_object_recognition/train_object_classifier.h>
+#include <CGAL/Shape_analysis/available_processors.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <thread>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -288,7 +288,7 @@ int run_recognize(const Recognize_options& o)
     stage_objects_file_in_pieces(outputs, o.output, *reader, tiled, "points recognize", label,
                                  model ? model->label_comment() : std::string(), class_names,
                                  ro.number_of_threads > 0 ? ro.number_of_threads
-                                                          : std::max(1u, std::thread::hardware_concurrency()),
+                                                          : CGAL::Shape_analysis::available_processors(),
                                  o.only_objects);
   else if(o.only_objects)
     stage_object_points_file(outputs, o.output, o.input, points, object, "points recognize", label,

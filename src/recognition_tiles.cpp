@@ -12,6 +12,7 @@
 #include "ranks.h"
 
 #include <CGAL/Point_set_3/IO/PLY.h>
+#include <CGAL/Shape_analysis/available_processors.h>
 #include <CGAL/Point_set_object_recognition/write_point_set.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -28,7 +29,6 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
-#include <thread>
 #include <typeindex>
 #include <sstream>
 #include <limits>
@@ -505,13 +505,13 @@ bool fail_on_purpose(std::size_t t)
   return v && std::to_string(t) == v;
 }
 
-// Runs body() on `threads` threads (0: as many as TBB chooses) at once, each until it returns.
+// Runs body() on `threads` threads (0: one per available processor) at once, each until it returns.
 template <typename Body>
 void on_threads(std::size_t threads, const Body& body)
 {
 #ifdef CGAL_LINKED_WITH_TBB
   if(threads != 1) {
-    tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : int(threads));
+    tbb::task_arena arena(int(threads == 0 ? CGAL::Shape_analysis::available_processors() : threads));
     arena.execute([&]() {
       const std::size_t workers = std::size_t(arena.max_concurrency());
       tbb::parallel_for(std::size_t(0), workers, std::size_t(1), [&](std::size_t) { body(); });
@@ -615,7 +615,7 @@ Recognition_in_tiles recognize_in_tiles(const Scan_files& reader, const std::str
   PSOR::Tile_plan plan;
   // The points' files: a part per thread of each rank (rank 0's number of threads for all).
   const std::size_t parts_per_rank = std::size_t(std::stoul(ranks.broadcast(std::to_string(
-    options.number_of_threads > 0 ? options.number_of_threads : std::max(1u, std::thread::hardware_concurrency())))));
+    options.number_of_threads > 0 ? options.number_of_threads : CGAL::Shape_analysis::available_processors()))));
   int parts = ranks.size() * int(parts_per_rank);
   if(!read_plan(text, key, options, plan, parts, m.lowest, m.highest)) { // a new plan: the tiles done before are not for it
     parts = ranks.size() * int(parts_per_rank);

@@ -6,6 +6,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Randomized_cuts/most_consistent_cuts.h>
 #include <CGAL/Randomized_cuts/partition_function.h>
+#include <CGAL/Shape_analysis/available_processors.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -44,8 +45,10 @@ int main(int argc, char** argv)
     for(edge_descriptor e : edges(mesh))
       sorted.push_back(value[e]);
     std::sort(sorted.begin(), sorted.end(), std::greater<double>());
-    std::cout << r.number_of_samples << " hierarchical samples of " << num_faces(mesh)
-              << " faces; largest edge value " << sorted.front() << ", 99th percentile "
+    // number_of_threads (default 0) ran one thread per processor this process may use; the
+    // values are the same for any number of threads.
+    std::cout << r.number_of_samples << " hierarchical samples of " << num_faces(mesh) << " faces on "
+              << CGAL::Shape_analysis::available_processors() << " threads; largest edge value " << sorted.front() << ", 99th percentile "
               << sorted[sorted.size() / 100] << "\n";
 
     // The five most consistent cuts, from min-cut samples (most_consistent_cuts()'s default).

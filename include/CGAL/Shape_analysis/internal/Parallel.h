@@ -9,6 +9,8 @@
 // item to item). Items must not depend on which thread or workspace runs them: results are then
 // identical for any number of threads.
 
+#include <CGAL/Shape_analysis/available_processors.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <memory>
@@ -38,8 +40,8 @@ template <typename Workspace>
 class Parallel_workspaces
 {
 public:
-  // `threads`: 0 for as many as TBB chooses (the cores), 1 to run on the calling thread only, n
-  // for at most n threads.
+  // `threads`: 0 for one per processor the process may use (available_processors()), 1 to run
+  // on the calling thread only, n for at most n threads.
   explicit Parallel_workspaces(std::size_t threads = 0) : m_threads(threads) {}
 
   // Calls body(i, workspace) for every i in [begin, end).
@@ -58,10 +60,16 @@ public:
                               body(i, w);
                           });
       };
-      if(m_threads == 0)
+      const std::size_t threads = m_threads == 0 ? Shape_analysis::available_processors() : m_threads;
+      if(threads == 1) {
+        Workspace& w = local();
+        for(std::size_t i = begin; i < end; ++i)
+          body(i, w);
+      }
+      else if(m_threads == 0 && int(threads) >= tbb::this_task_arena::max_concurrency())
         loop();
       else {
-        tbb::task_arena arena(static_cast<int>((std::min)(m_threads, std::size_t(1) << 16)));
+        tbb::task_arena arena(static_cast<int>((std::min)(threads, std::size_t(1) << 16)));
         arena.execute(loop);
       }
       return;
