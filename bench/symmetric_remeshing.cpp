@@ -7,7 +7,8 @@
 //     vertices, edges and faces with mirror partners (measured again from positions), faces, the
 //     two-sided Hausdorff distance (support's mesh_distance, fixed seed; relative to the input's
 //     bounding-box diagonal) to the symmetrized mesh and to the input, the mean normal deviation
-//     (degrees) to the symmetrized mesh, and the same for the copy of one side (copy_one_side);
+//     (degrees) to the symmetrized mesh, and the same for the copy of one side (copy_one_side:
+//     the positive side; copy_other_side: the negative one, with the plane reversed);
 //   - symmetric_decimation() of the remeshed mesh to a fifth of the faces: seconds, fractions, faces;
 //   - symmetric_simplification() of the input to a fifth with the residuals restored, beside CGAL's
 //     Garland-Heckbert edge collapse (GarlandHeckbert_plane_policies) to the same face count:
@@ -157,6 +158,9 @@ SAS::Json run(const std::string& name, const Mesh& input, bool simplification, s
   try {
     j["remeshing"] = remesh(symmetrized, input, s, diagonal, false);
     j["copy_one_side"] = remesh(symmetrized, input, s, diagonal, true);
+    Symmetry reversed = s; // the same reflection, the other side copied
+    reversed.plane = s.plane.opposite();
+    j["copy_other_side"] = remesh(symmetrized, input, reversed, diagonal, true);
     if(simplification)
       j["simplification"] = simplify(input, s, diagonal, threads);
   } catch(const CGAL::Shape_analysis::Bad_input& e) {
