@@ -51,7 +51,8 @@ public:
     if(begin >= end)
       return;
 #ifdef CGAL_LINKED_WITH_TBB
-    if(m_threads != 1 && end - begin > 1) {
+    const std::size_t threads = m_threads == 0 ? Shape_analysis::available_processors() : m_threads;
+    if(threads != 1 && end - begin > 1) {
       auto loop = [&]() {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 1),
                           [&](const tbb::blocked_range<std::size_t>& range) {
@@ -60,13 +61,7 @@ public:
                               body(i, w);
                           });
       };
-      const std::size_t threads = m_threads == 0 ? Shape_analysis::available_processors() : m_threads;
-      if(threads == 1) {
-        Workspace& w = local();
-        for(std::size_t i = begin; i < end; ++i)
-          body(i, w);
-      }
-      else if(m_threads == 0 && int(threads) >= tbb::this_task_arena::max_concurrency())
+      if(m_threads == 0 && int(threads) >= tbb::this_task_arena::max_concurrency())
         loop();
       else {
         tbb::task_arena arena(static_cast<int>((std::min)(threads, std::size_t(1) << 16)));
