@@ -16,7 +16,7 @@
 #include <thread>
 
 #ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/task_arena.h>
+#include <tbb/info.h>
 #endif
 
 namespace CGAL {
@@ -115,7 +115,8 @@ inline std::size_t available_processors()
 {
   static const std::size_t n = []() {
 #ifdef CGAL_LINKED_WITH_TBB
-    const std::size_t p = std::size_t((std::max)(1, tbb::this_task_arena::max_concurrency()));
+    // The process's count, not the calling arena's (a first call inside a smaller arena).
+    const std::size_t p = std::size_t((std::max)(1, tbb::info::default_concurrency()));
 #else
     const std::size_t p = (std::max)(1u, std::thread::hardware_concurrency());
 #endif
